@@ -1,0 +1,59 @@
+using AcPhys.Core;
+
+namespace AcPhys.Spec.Adapters;
+
+/// <summary>
+/// The adapter contract: what an implementation under test offers. A partial implementation announces what it
+/// has in <see cref="Ops"/>; invariants that need anything else are reported as not tested, never as passed.
+/// </summary>
+/// <remarks>
+/// Methods for operations outside <see cref="Ops"/> may throw <see cref="NotSupportedException"/>. Any other
+/// exception is a finding: the LandDefs operations are total and must answer every input.
+/// An adapter that cannot reach its implementation (a crashed or hung process) throws <see cref="AdapterFailureException"/>.
+/// </remarks>
+public interface ICellPhysics
+{
+    /// <summary>Gets the implementation's name, for reports.</summary>
+    string Name { get; }
+
+    /// <summary>Gets the operations this implementation offers.</summary>
+    Op Ops { get; }
+
+    /// <summary><c>blockid_to_lcoord</c>: (8·bx, 8·by) of the id's landblock.</summary>
+    /// <param name="id">Any id.</param>
+    /// <param name="lcoord">The result on success.</param>
+    /// <returns>Success.</returns>
+    bool BlockIdToLcoord(CellId id, out Lcoord lcoord);
+
+    /// <summary><c>gid_to_lcoord</c>: the global lcoord of a land cell id.</summary>
+    /// <param name="id">Any id.</param>
+    /// <param name="lcoord">The result on success.</param>
+    /// <returns>Success.</returns>
+    bool GidToLcoord(CellId id, out Lcoord lcoord);
+
+    /// <summary><c>lcoord_to_gid</c>: the land cell id of an lcoord, or id 0 off the map.</summary>
+    /// <param name="x">Global column.</param>
+    /// <param name="y">Global row.</param>
+    /// <returns>The id.</returns>
+    CellId LcoordToGid(int x, int y);
+
+    /// <summary><c>inbound_valid_cellid</c>.</summary>
+    /// <param name="id">Any id.</param>
+    /// <returns>Validity.</returns>
+    bool InboundValidCellId(CellId id);
+
+    /// <summary><c>get_outside_lcoord</c>: the lcoord of the 24 m column containing a block-frame point.</summary>
+    /// <param name="id">Any id.</param>
+    /// <param name="x">Block-frame x.</param>
+    /// <param name="y">Block-frame y.</param>
+    /// <param name="lcoord">The result on success.</param>
+    /// <returns>Success.</returns>
+    bool GetOutsideLcoord(CellId id, float x, float y, out Lcoord lcoord);
+
+    /// <summary><c>adjust_to_outside</c>: re-seat (id, x, y) to the land cell under the point.</summary>
+    /// <param name="id">Any id.</param>
+    /// <param name="x">Block-frame x.</param>
+    /// <param name="y">Block-frame y.</param>
+    /// <returns>The outcome.</returns>
+    AdjustResult AdjustToOutside(CellId id, float x, float y);
+}

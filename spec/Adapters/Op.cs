@@ -1,0 +1,74 @@
+namespace AcPhys.Spec.Adapters;
+
+/// <summary>The operations an implementation under test may offer; names match protocol v1 (docs/protocol.md).</summary>
+[Flags]
+public enum Op
+{
+    /// <summary>No operation.</summary>
+    None = 0,
+
+    /// <summary><c>blockid_to_lcoord</c>.</summary>
+    BlockIdToLcoord = 1 << 0,
+
+    /// <summary><c>gid_to_lcoord</c>.</summary>
+    GidToLcoord = 1 << 1,
+
+    /// <summary><c>lcoord_to_gid</c>.</summary>
+    LcoordToGid = 1 << 2,
+
+    /// <summary><c>inbound_valid_cellid</c>.</summary>
+    InboundValidCellId = 1 << 3,
+
+    /// <summary><c>get_outside_lcoord</c>.</summary>
+    GetOutsideLcoord = 1 << 4,
+
+    /// <summary><c>adjust_to_outside</c>.</summary>
+    AdjustToOutside = 1 << 5,
+
+    /// <summary>Every LandDefs operation.</summary>
+    LandDefs = BlockIdToLcoord | GidToLcoord | LcoordToGid | InboundValidCellId | GetOutsideLcoord | AdjustToOutside,
+}
+
+/// <summary>Protocol names of <see cref="Op"/> values.</summary>
+public static class OpNames
+{
+    private static readonly (Op Op, string Name)[] Table =
+    [
+        (Op.BlockIdToLcoord, "blockid_to_lcoord"),
+        (Op.GidToLcoord, "gid_to_lcoord"),
+        (Op.LcoordToGid, "lcoord_to_gid"),
+        (Op.InboundValidCellId, "inbound_valid_cellid"),
+        (Op.GetOutsideLcoord, "get_outside_lcoord"),
+        (Op.AdjustToOutside, "adjust_to_outside"),
+    ];
+
+    /// <summary>Returns the protocol names of every flag set in <paramref name="ops"/>.</summary>
+    /// <param name="ops">A set of operations.</param>
+    /// <returns>The names, in protocol order.</returns>
+    public static IReadOnlyList<string> Names(Op ops) => Table.Where(t => (ops & t.Op) != 0).Select(t => t.Name).ToArray();
+
+    /// <summary>Parses protocol names into a set of operations; unknown names are returned separately.</summary>
+    /// <param name="names">Names as an implementation announced them.</param>
+    /// <param name="unknown">Names this version does not know.</param>
+    /// <returns>The known operations.</returns>
+    public static Op Parse(IEnumerable<string> names, out IReadOnlyList<string> unknown)
+    {
+        var ops = Op.None;
+        var rest = new List<string>();
+        foreach (var name in names)
+        {
+            var hit = Table.FirstOrDefault(t => t.Name == name);
+            if (hit.Op == Op.None)
+            {
+                rest.Add(name);
+            }
+            else
+            {
+                ops |= hit.Op;
+            }
+        }
+
+        unknown = rest;
+        return ops;
+    }
+}

@@ -1,0 +1,226 @@
+using System.Text;
+using System.Text.Json;
+using AcPhys.Core;
+using AcPhys.Core.Text;
+using AcPhys.Spec.Cases;
+
+namespace AcPhys.Spec.Corpus;
+
+/// <summary>
+/// Reads and writes corpus files (docs/corpus-format.md): readable JSON, hex cell ids, float32 values printed so
+/// they round-trip, non-finite values as the strings "NaN", "Infinity", "-Infinity". Reading validates everything
+/// and reports the first problem with its JSON path; it never returns a half-read entry.
+/// </summary>
+public static class CorpusJson
+{
+    /// <summary>The value of the <c>format</c> field.</summary>
+    public const string FormatName = "acphys-case";
+
+    private static readonly JsonWriterOptions WriterOptions = new() { Indented = true };
+
+    /// <summary>Serialises an entry.</summary>
+    /// <param name="entry">The entry.</param>
+    /// <returns>The JSON text, ending in a newline.</returns>
+    public static string Write(CorpusEntry entry)
+    {
+        using var buffer = new MemoryStream();
+        using (var w = new Utf8JsonWriter(buffer, WriterOptions))
+        {
+            w.WriteStartObject();
+            w.WriteString("format", FormatName);
+            w.WriteNumber("version", CorpusEntry.CurrentVersion);
+            w.WriteString("kind", "land");
+            w.WriteString("title", entry.Title);
+            if (entry.Invariant is not null)
+            {
+                w.WriteString("invariant", entry.Invariant);
+            }
+
+            w.WriteString("foundBy", entry.FoundBy);
+            if (entry.Seed is not null)
+            {
+                w.WriteString("seed", entry.Seed);
+            }
+
+            w.WriteStartArray("catches");
+            foreach (var f in entry.Catches)
+            {
+                w.WriteStringValue(f);
+            }
+
+            w.WriteEndArray();
+            w.WriteStartObject("case");
+            w.WriteString("cell", CellIdText.Format(entry.Case.Cell));
+            WriteFloat(w, "x", entry.Case.X);
+            WriteFloat(w, "y", entry.Case.Y);
+            w.WriteStartArray("lcoord");
+            w.WriteNumberValue(entry.Case.Lcoord.X);
+            w.WriteNumberValue(entry.Case.Lcoord.Y);
+            w.WriteEndArray();
+            w.WriteEndObject();
+            w.WriteEndObject();
+        }
+
+        return Encoding.UTF8.GetString(buffer.ToArray()) + "\n";
+    }
+
+    /// <summary>Parses an entry.</summary>
+    /// <param name="json">The text.</param>
+    /// <param name="source">A name for messages (the file path).</param>
+    /// <returns>The entry.</returns>
+    /// <exception cref="CorpusFormatException">The text is not a valid corpus entry.</exception>
+    public static CorpusEntry Read(string json, string source)
+    {
+        JsonDocument doc;
+        try
+        {
+            doc = JsonDocument.Parse(json, new JsonDocumentOptions { CommentHandling = JsonCommentHandling.Disallow, MaxDepth = 16 });
+        }
+        catch (JsonException e)
+        {
+            throw new CorpusFormatException($"{source}: not valid JSON: {e.Message}");
+        }
+
+        using (doc)
+        {
+            var root = doc.RootElement;
+            Require(root.ValueKind == JsonValueKind.Object, source, "$", "expected an object");
+            Require(Str(root, "format", source) == FormatName, source, "$.format", $"expected \"{FormatName}\"");
+            var version = Prop(root, "version", source);
+            Require(version.ValueKind == JsonValueKind.Number && version.TryGetInt32(out int v) && v == CorpusEntry.CurrentVersion, source, "$.version", $"expected {CorpusEntry.CurrentVersion}");
+            Require(Str(root, "kind", source) == "land", source, "$.kind", "expected \"land\" (the only kind in version 1)");
+            string title = Str(root, "title", source);
+            string foundBy = Str(root, "foundBy", source);
+            Require(foundBy is "hand" or "props" or "fuzz" or "spec", source, "$.foundBy", "expected hand, props, fuzz or spec");
+            string? invariant = OptStr(root, "invariant", source);
+            string? seed = OptStr(root, "seed", source);
+            var catches = new List<string>();
+            if (root.TryGetProperty("catches", out var c))
+            {
+                Require(c.ValueKind == JsonValueKind.Array, source, "$.catches", "expected an array of fault ids");
+                int i = 0;
+                foreach (var item in c.EnumerateArray())
+                {
+                    Require(item.ValueKind == JsonValueKind.String, source, $"$.catches[{i}]", "expected a string");
+                    catches.Add(item.GetString()!);
+                    i++;
+                }
+            }
+
+            var caseElement = Prop(root, "case", source);
+            Require(caseElement.ValueKind == JsonValueKind.Object, source, "$.case", "expected an object");
+            string cellText = Str(caseElement, "cell", source, "$.case");
+            Require(CellIdText.TryParse(cellText, out var cell), source, "$.case.cell", $"expected \"0x\" and 8 hex digits, got \"{cellText}\"");
+            float x = Float(caseElement, "x", source);
+            float y = Float(caseElement, "y", source);
+            var lc = Prop(caseElement, "lcoord", source, "$.case");
+            Require(lc.ValueKind == JsonValueKind.Array && lc.GetArrayLength() == 2, source, "$.case.lcoord", "expected [x, y]");
+            Require(lc[0].ValueKind == JsonValueKind.Number && lc[0].TryGetInt32(out int lx), source, "$.case.lcoord[0]", "expected a 32-bit integer");
+            Require(lc[1].ValueKind == JsonValueKind.Number && lc[1].TryGetInt32(out int ly), source, "$.case.lcoord[1]", "expected a 32-bit integer");
+            lx = lc[0].GetInt32();
+            ly = lc[1].GetInt32();
+
+            return new CorpusEntry
+            {
+                Title = title,
+                Invariant = invariant,
+                FoundBy = foundBy,
+                Seed = seed,
+                Catches = catches,
+                Case = new LandCase(cell, x, y, new Lcoord(lx, ly)),
+            };
+        }
+    }
+
+    /// <summary>Reads a corpus file.</summary>
+    /// <param name="path">The file.</param>
+    /// <returns>The entry.</returns>
+    /// <exception cref="CorpusFormatException">The file cannot be read or is not valid.</exception>
+    public static CorpusEntry ReadFile(string path)
+    {
+        string text;
+        try
+        {
+            text = File.ReadAllText(path);
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+        {
+            throw new CorpusFormatException($"{path}: cannot read: {e.Message}");
+        }
+
+        return Read(text, path);
+    }
+
+    private static void WriteFloat(Utf8JsonWriter w, string name, float value)
+    {
+        if (float.IsFinite(value))
+        {
+            // Shortest round-trip text of the float32 itself, not of its double widening.
+            w.WritePropertyName(name);
+            w.WriteRawValue(FloatText.Format(value));
+        }
+        else
+        {
+            w.WriteString(name, FloatText.Format(value) switch { "∞" => "Infinity", "-∞" => "-Infinity", var s => s });
+        }
+    }
+
+    private static float Float(JsonElement parent, string name, string source)
+    {
+        var e = Prop(parent, name, source, "$.case");
+        string path = "$.case." + name;
+        if (e.ValueKind == JsonValueKind.String)
+        {
+            return e.GetString() switch
+            {
+                "NaN" => float.NaN,
+                "Infinity" => float.PositiveInfinity,
+                "-Infinity" => float.NegativeInfinity,
+                var s => throw new CorpusFormatException($"{source}: {path}: expected a number or \"NaN\"/\"Infinity\"/\"-Infinity\", got \"{s}\""),
+            };
+        }
+
+        Require(e.ValueKind == JsonValueKind.Number, source, path, "expected a number");
+        Require(e.TryGetDouble(out double d), source, path, "number out of range");
+        float f = (float)d;
+        Require(float.IsFinite(f), source, path, "number overflows float32 (write \"Infinity\" if meant)");
+        Require((double)f == d || float.Parse(e.GetRawText(), System.Globalization.CultureInfo.InvariantCulture) == f, source, path, "not a float32 value");
+        return float.Parse(e.GetRawText(), System.Globalization.CultureInfo.InvariantCulture);
+    }
+
+    private static JsonElement Prop(JsonElement parent, string name, string source, string at = "$")
+    {
+        if (!parent.TryGetProperty(name, out var e))
+        {
+            throw new CorpusFormatException($"{source}: {at}.{name}: missing");
+        }
+
+        return e;
+    }
+
+    private static string Str(JsonElement parent, string name, string source, string at = "$")
+    {
+        var e = Prop(parent, name, source, at);
+        Require(e.ValueKind == JsonValueKind.String, source, $"{at}.{name}", "expected a string");
+        return e.GetString()!;
+    }
+
+    private static string? OptStr(JsonElement parent, string name, string source)
+    {
+        if (!parent.TryGetProperty(name, out var e) || e.ValueKind == JsonValueKind.Null)
+        {
+            return null;
+        }
+
+        Require(e.ValueKind == JsonValueKind.String, source, "$." + name, "expected a string");
+        return e.GetString();
+    }
+
+    private static void Require(bool condition, string source, string path, string message)
+    {
+        if (!condition)
+        {
+            throw new CorpusFormatException($"{source}: {path}: {message}");
+        }
+    }
+}

@@ -1,0 +1,34 @@
+namespace AcPhys.Spec.Invariants;
+
+/// <summary>What one check said about one case.</summary>
+public enum Verdict
+{
+    /// <summary>The invariant applied to the case and held.</summary>
+    Holds,
+
+    /// <summary>The case is outside the invariant's premise (counted, so vacuous runs are visible).</summary>
+    Vacuous,
+
+    /// <summary>The invariant applied and was broken.</summary>
+    Violated,
+}
+
+/// <summary>The result of checking one invariant on one case.</summary>
+/// <param name="Verdict">Held, vacuous or violated.</param>
+/// <param name="Message">For a violation, what was observed against what was expected.</param>
+public readonly record struct Outcome(Verdict Verdict, string? Message)
+{
+    /// <summary>Gets the outcome "applied and held".</summary>
+    public static Outcome Holds => new(Verdict.Holds, null);
+
+    /// <summary>Gets the outcome "did not apply".</summary>
+    public static Outcome Vacuous => new(Verdict.Vacuous, null);
+
+    /// <summary>Returns a violation.</summary>
+    /// <param name="message">Observed against expected.</param>
+    /// <returns>The outcome.</returns>
+    public static Outcome Violated(string message) => new(Verdict.Violated, message);
+
+    /// <summary>Gets a value indicating whether this is a violation.</summary>
+    public bool IsViolation => Verdict == Verdict.Violated;
+}

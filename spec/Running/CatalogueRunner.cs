@@ -1,0 +1,179 @@
+using System.Diagnostics;
+using AcPhys.Spec.Adapters;
+using AcPhys.Spec.Cases;
+using AcPhys.Spec.Generators;
+using AcPhys.Spec.Invariants;
+using FsCheck;
+using FsCheck.Fluent;
+using Outcome = AcPhys.Spec.Invariants.Outcome;
+
+namespace AcPhys.Spec.Running;
+
+/// <summary>
+/// Runs invariants against an implementation with FsCheck: generated cases from a seed, shrinking on failure,
+/// the boundary-class distribution, and the seed that replays a failure.
+/// </summary>
+public static class CatalogueRunner
+{
+    /// <summary>Runs one LandDefs invariant.</summary>
+    /// <param name="invariant">The invariant.</param>
+    /// <param name="impl">The implementation under test.</param>
+    /// <param name="cases">How many cases to generate.</param>
+    /// <param name="seed">The seed (with a size to replay one case).</param>
+    /// <param name="sink">Optional sink for FsCheck's own text (the class distribution).</param>
+    /// <returns>The result.</returns>
+    /// <exception cref="AdapterFailureException">The implementation could not answer at all.</exception>
+    public static InvariantResult Run(Invariant<LandCase> invariant, ICellPhysics impl, int cases, Seed seed, Action<string>? sink = null)
+    {
+        if (!invariant.IsTestable(impl))
+        {
+            var missing = OpNames.Names(invariant.Requires & ~impl.Ops);
+            return new InvariantResult
+            {
+                Invariant = invariant,
+                Status = ResultStatus.NotTested,
+                NotTestedReason = "implementation lacks " + string.Join(", ", missing),
+                Seed = seed,
+            };
+        }
+
+        var stopwatch = Stopwatch.StartNew();
+        var classes = new Dictionary<string, int>();
+        int generated = 0, applicable = 0;
+        bool failing = false;
+        AdapterFailureException? adapterFailure = null;
+
+        Property Body(LandCase c)
+        {
+            Outcome outcome;
+            try
+            {
+                outcome = invariant.Check(impl, c);
+            }
+            catch (AdapterFailureException e)
+            {
+                adapterFailure ??= e;
+                throw;
+            }
+
+            if (!failing)
+            {
+                generated++;
+                if (outcome.Verdict == Verdict.Holds)
+                {
+                    applicable++;
+                }
+
+                foreach (var tag in BoundaryClasses.Of(c))
+                {
+                    classes[tag] = classes.GetValueOrDefault(tag) + 1;
+                }
+
+                failing = outcome.IsViolation;
+            }
+
+            return (!outcome.IsViolation).Label(outcome.Message ?? invariant.Id)
+                .Collect(BoundaryClasses.PrimaryCoordinate(c) + (outcome.Verdict == Verdict.Vacuous ? " (vacuous)" : string.Empty));
+        }
+
+        var runner = new CapturingRunner(sink);
+        var config = Config.Quick
+            .WithName(invariant.Id)
+            .WithMaxTest(cases)
+            .WithMaxRejected(cases)
+            .WithRunner(runner)
+            .WithReplay(seed.Value, seed.Gamma, seed.Size ?? 0);
+        if (seed.Size is null)
+        {
+            config = config.WithNoReplay().WithReplay(seed.Value, seed.Gamma);
+        }
+
+        Check.One(config, Prop.ForAll(LandGens.Arbitrary, (Func<LandCase, Property>)Body));
+        stopwatch.Stop();
+
+        if (adapterFailure is not null)
+        {
+            throw adapterFailure;
+        }
+
+        var result = new InvariantResult
+        {
+            Invariant = invariant,
+            Status = ResultStatus.Passed,
+            Cases = generated,
+            Applicable = applicable,
+            Classes = classes,
+            Seed = seed,
+            Elapsed = stopwatch.Elapsed,
+        };
+
+        if (runner.Result is TestResult.Failed failed)
+        {
+            var original = failed.Item2.Head is LandCase o ? ViolationOf(invariant, impl, o) : null;
+            var shrunk = failed.Item3.Head is LandCase s ? ViolationOf(invariant, impl, s) : null;
+            return result with
+            {
+                Status = ResultStatus.Failed,
+                Violation = shrunk ?? original,
+                Original = original,
+                Replay = new Seed(failed.Item5.Seed, failed.Item5.Gamma, failed.Item7),
+            };
+        }
+
+        return result;
+    }
+
+    /// <summary>Runs every LandDefs invariant of the catalogue under a profile.</summary>
+    /// <param name="impl">The implementation under test.</param>
+    /// <param name="profile">The budget.</param>
+    /// <param name="only">Invariant IDs to run (all when null or empty).</param>
+    /// <param name="fixedSeed">A seed to use for every invariant instead of the profile's.</param>
+    /// <param name="progress">Called after each invariant.</param>
+    /// <returns>One result per invariant.</returns>
+    public static IReadOnlyList<InvariantResult> RunCatalogue(
+        ICellPhysics impl,
+        Profile profile,
+        IReadOnlyCollection<string>? only = null,
+        Seed? fixedSeed = null,
+        Action<InvariantResult>? progress = null)
+    {
+        ulong runBase = profile.BaseSeed ?? Seed.Fresh().Value;
+        var results = new List<InvariantResult>();
+        foreach (var invariant in InvariantCatalogue.Land)
+        {
+            if (only is { Count: > 0 } && !only.Contains(invariant.Id, StringComparer.OrdinalIgnoreCase))
+            {
+                continue;
+            }
+
+            var seed = fixedSeed ?? Seed.Derive(runBase, invariant.Id);
+            var result = Run(invariant, impl, profile.CasesPerInvariant, seed);
+            if (profile.Exhaustive && result.Status == ResultStatus.Passed && fixedSeed is null)
+            {
+                var sweep = Exhaustive.For(invariant, impl);
+                if (sweep is not null)
+                {
+                    result = result with
+                    {
+                        ExhaustiveCases = sweep.Cases,
+                        Status = sweep.FirstViolation is null ? ResultStatus.Passed : ResultStatus.Failed,
+                        Violation = sweep.FirstViolation,
+                        Original = sweep.FirstViolation,
+                        Elapsed = result.Elapsed + sweep.Elapsed,
+                    };
+                }
+            }
+
+            results.Add(result);
+            progress?.Invoke(result);
+        }
+
+        return results;
+    }
+
+    private static Violation? ViolationOf(Invariant<LandCase> invariant, ICellPhysics impl, LandCase c)
+    {
+        var outcome = invariant.Check(impl, c);
+        return outcome.IsViolation ? new Violation(invariant.Id, outcome.Message ?? "violated", c.ToString()) : null;
+    }
+}

@@ -1,0 +1,56 @@
+using AcPhys.Spec.Invariants;
+
+namespace AcPhys.Spec.Running;
+
+/// <summary>How one invariant fared in a run.</summary>
+public enum ResultStatus
+{
+    /// <summary>Every case held.</summary>
+    Passed,
+
+    /// <summary>A case violated it.</summary>
+    Failed,
+
+    /// <summary>The implementation lacks an operation it needs.</summary>
+    NotTested,
+}
+
+/// <summary>The result of running one invariant against one implementation.</summary>
+public sealed record InvariantResult
+{
+    /// <summary>Gets the invariant.</summary>
+    public required Invariant Invariant { get; init; }
+
+    /// <summary>Gets the verdict.</summary>
+    public required ResultStatus Status { get; init; }
+
+    /// <summary>Gets the number of generated cases checked (before any shrinking).</summary>
+    public int Cases { get; init; }
+
+    /// <summary>Gets how many of them the invariant applied to (not vacuous).</summary>
+    public int Applicable { get; init; }
+
+    /// <summary>Gets the exhaustive cases checked, when the profile sweeps a finite domain this invariant covers.</summary>
+    public long ExhaustiveCases { get; init; }
+
+    /// <summary>Gets how often each boundary class was hit.</summary>
+    public IReadOnlyDictionary<string, int> Classes { get; init; } = new Dictionary<string, int>();
+
+    /// <summary>Gets the seed the generated cases came from.</summary>
+    public Seed Seed { get; init; }
+
+    /// <summary>Gets the shrunk violation, when failed.</summary>
+    public Violation? Violation { get; init; }
+
+    /// <summary>Gets the violation as first found, before shrinking.</summary>
+    public Violation? Original { get; init; }
+
+    /// <summary>Gets the seed and size that replay the failing case.</summary>
+    public Seed? Replay { get; init; }
+
+    /// <summary>Gets why the invariant was not tested.</summary>
+    public string? NotTestedReason { get; init; }
+
+    /// <summary>Gets the time spent.</summary>
+    public TimeSpan Elapsed { get; init; }
+}
