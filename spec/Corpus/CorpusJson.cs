@@ -161,7 +161,7 @@ public static class CorpusJson
         }
         else
         {
-            w.WriteString(name, FloatText.Format(value) switch { "∞" => "Infinity", "-∞" => "-Infinity", var s => s });
+            w.WriteString(name, FloatText.Format(value)); // NaN, Infinity or -Infinity
         }
     }
 
@@ -181,11 +181,11 @@ public static class CorpusJson
         }
 
         Require(e.ValueKind == JsonValueKind.Number, source, path, "expected a number");
-        Require(e.TryGetDouble(out double d), source, path, "number out of range");
-        float f = (float)d;
-        Require(float.IsFinite(f), source, path, "number overflows float32 (write \"Infinity\" if meant)");
-        Require((double)f == d || float.Parse(e.GetRawText(), System.Globalization.CultureInfo.InvariantCulture) == f, source, path, "not a float32 value");
-        return float.Parse(e.GetRawText(), System.Globalization.CultureInfo.InvariantCulture);
+
+        // Parsed straight to float32 (one rounding), so text written by FloatText round-trips to the same bits.
+        float f = float.Parse(e.GetRawText(), System.Globalization.NumberStyles.Float, System.Globalization.CultureInfo.InvariantCulture);
+        Require(float.IsFinite(f), source, path, "number overflows float32 (write \"Infinity\" if that is meant)");
+        return f;
     }
 
     private static JsonElement Prop(JsonElement parent, string name, string source, string at = "$")
