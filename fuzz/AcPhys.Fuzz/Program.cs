@@ -3,9 +3,10 @@ using AcPhys.Fuzz.Runtime;
 
 // AcPhys.Fuzz TARGET [INPUT]          serve afl-fuzz (INPUT is afl's @@ file; stdin without it), or run INPUT once
 // AcPhys.Fuzz replay TARGET FILE...   replay saved inputs; exit 1 if any crashes
+// AcPhys.Fuzz seeds TARGET DIR        write the target's seed inputs into DIR
 // AcPhys.Fuzz list                    list targets
 // TARGET may also come from ACPHYS_FUZZ_TARGET; the planted fault from ACPHYS_FAULT (unset or empty: correct core).
-const string Usage = "usage: AcPhys.Fuzz TARGET [INPUT] | AcPhys.Fuzz replay TARGET FILE... | AcPhys.Fuzz list";
+const string Usage = "usage: AcPhys.Fuzz TARGET [INPUT] | replay TARGET FILE... | seeds TARGET DIR | list";
 
 string? fault = Environment.GetEnvironmentVariable("ACPHYS_FAULT") is { Length: > 0 } f ? f : null;
 var rest = new Queue<string>(args);
@@ -25,6 +26,24 @@ switch (command)
 
         return 0;
 
+    case "seeds":
+        {
+            if (rest.Count != 2 || Targets.Find(rest.Dequeue()) is not { } target)
+            {
+                Console.Error.WriteLine(Usage);
+                return 2;
+            }
+
+            string dir = Directory.CreateDirectory(rest.Dequeue()).FullName;
+            foreach (var (name, bytes) in target.Seeds)
+            {
+                File.WriteAllBytes(Path.Combine(dir, name), bytes);
+            }
+
+            Console.WriteLine($"wrote {target.Seeds.Count} seed(s) to {dir}");
+            return 0;
+        }
+
     case "replay":
         {
             if (rest.Count < 2 || Targets.Find(rest.Dequeue()) is not { } target)
@@ -33,7 +52,11 @@ switch (command)
                 return 2;
             }
 
-            var test = target.Create(fault);
+            if (Create(target, fault) is not { } test)
+            {
+                return 2;
+            }
+
             int crashes = 0;
             foreach (string file in rest)
             {
@@ -52,6 +75,19 @@ switch (command)
                 return 2;
             }
 
-            return Fuzzer.Run(target.Create(fault), rest.Count > 0 ? rest.Dequeue() : null);
+            return Create(target, fault) is { } test ? Fuzzer.Run(test, rest.Count > 0 ? rest.Dequeue() : null) : 2;
         }
+}
+
+static Action<ReadOnlySpan<byte>>? Create(FuzzTarget target, string? fault)
+{
+    try
+    {
+        return target.Create(fault);
+    }
+    catch (ArgumentException e)
+    {
+        Console.Error.WriteLine(e.Message);
+        return null;
+    }
 }

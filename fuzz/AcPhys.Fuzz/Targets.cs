@@ -5,10 +5,15 @@ namespace AcPhys.Fuzz;
 /// <summary>The targets this harness knows.</summary>
 internal static class Targets
 {
+    // Declared before All: static fields initialize in text order.
+    private static readonly Dictionary<string, byte[]> ToySeeds = new() { ["hello"] = "hello fuzz"u8.ToArray() };
+
     /// <summary>Gets every target, by name.</summary>
     public static IReadOnlyList<FuzzTarget> All { get; } =
     [
-        new("toy", "pipeline smoke test: nested magic-bytes check, crashes on the prefix \"AC!P\"", CreateToy),
+        LandTarget.Target,
+        new("toy", "pipeline smoke test: nested magic-bytes check, crashes on the prefix \"AC!P\"", CreateToy, ToySeeds),
+        new("toy-slow", "timeout smoke test: as toy, but inputs starting with 'Z' take 300 ms", CreateToySlow, ToySeeds),
     ];
 
     /// <summary>Finds a target by name.</summary>
@@ -24,5 +29,19 @@ internal static class Targets
         }
 
         return data => MagicHeader.Parse(data);
+    }
+
+    private static Action<ReadOnlySpan<byte>> CreateToySlow(string? fault)
+    {
+        var parse = CreateToy(fault);
+        return data =>
+        {
+            if (!data.IsEmpty && data[0] == (byte)'Z')
+            {
+                Thread.Sleep(300);
+            }
+
+            parse(data);
+        };
     }
 }

@@ -142,8 +142,8 @@ public static class LandInvariants
     /// <summary>ADJUST-IDEMPOTENT.</summary>
     public static readonly Invariant<LandCase> AdjustIdempotent = new(
         "ADJUST-IDEMPOTENT",
-        "Re-seating a re-seated point keeps its cell and its position, except that a coordinate left inside the EPS snap band snaps to 0 once; a third re-seat changes nothing.",
-        "facts §2.1",
+        "Re-seating a re-seated point keeps its position (but for an EPS-band snap to 0) and its cell, unless the float32 re-base rounded the point exactly onto the cell's east or north line, where it moves once to the neighbour across that line; a third re-seat changes nothing.",
+        "facts §2.1, §6.5 (tie band: docs/numerics.md)",
         Op.AdjustToOutside,
         (impl, c) =>
         {
@@ -153,8 +153,21 @@ public static class LandInvariants
                 return Outcome.Vacuous;
             }
 
+            float sx = Oracle.Snap(r1.X), sy = Oracle.Snap(r1.Y);
+            var column = Oracle.Column(r1.Cell, sx, sy);
+            if (!column.Ok)
+            {
+                return Outcome.Violated($"re-seated point {Show(r1)} is not in a column on the map");
+            }
+
+            var expectedCell = Oracle.CellOf(column.X, column.Y);
+            if (expectedCell != r1.Cell && !OnUpperLineOf(r1.Cell, sx, sy))
+            {
+                return Outcome.Violated($"re-seated point {Show(r1)} lies in {expectedCell}, not on a line of {r1.Cell}");
+            }
+
             var r2 = impl.AdjustToOutside(r1.Cell, r1.X, r1.Y);
-            var expected2 = new AdjustResult(true, r1.Cell, Oracle.Snap(r1.X), Oracle.Snap(r1.Y));
+            var expected2 = new AdjustResult(true, expectedCell, sx, sy);
             if (!SameBits(r2, expected2))
             {
                 return Outcome.Violated($"second re-seat of {Show(r1)} gave {Show(r2)}, expected {Show(expected2)}");
@@ -191,8 +204,8 @@ public static class LandInvariants
     /// <summary>ADJUST-RANGE.</summary>
     public static readonly Invariant<LandCase> AdjustRange = new(
         "ADJUST-RANGE",
-        "A successful re-seat yields a land cell on the map and a re-based point with x, y in [0, 192) that lies in that cell's 24 m square.",
-        "facts §2.1 consequences",
+        "A successful re-seat yields a land cell on the map and a re-based point with x, y in [0, 192) that lies in that cell's closed 24 m square (on its east or north line only where float32 rounding of the re-base put it there).",
+        "facts §2.1 consequences, §5.5 (closed squares)",
         Op.AdjustToOutside,
         (impl, c) =>
         {
@@ -213,9 +226,10 @@ public static class LandInvariants
             }
 
             int idx = r.Cell.Low - 1;
-            return Math.Floor(r.X / 24.0) == idx / 8 && Math.Floor(r.Y / 24.0) == idx % 8
+            double west = 24.0 * (idx / 8), south = 24.0 * (idx % 8);
+            return r.X >= west && r.X <= west + 24 && r.Y >= south && r.Y <= south + 24
                 ? Outcome.Holds
-                : Outcome.Violated($"re-based point ({FloatText.Format(r.X)}, {FloatText.Format(r.Y)}) is not in the square of {r.Cell}");
+                : Outcome.Violated($"re-based point ({FloatText.Format(r.X)}, {FloatText.Format(r.Y)}) is not in the closed square of {r.Cell}");
         });
 
     /// <summary>MAP-EDGE.</summary>
@@ -315,6 +329,14 @@ public static class LandInvariants
 
     private static string Show(AdjustResult r) =>
         $"{(r.Ok ? "ok" : "failed")} {r.Cell} ({FloatText.Format(r.X)}, {FloatText.Format(r.Y)})";
+
+    // The float32 tie band (docs/numerics.md): a negative coordinate re-based by v + 192·k can round to exactly
+    // 24·(c + 1), the east/north line of the cell floor() chose before rounding.
+    private static bool OnUpperLineOf(CellId cell, float x, float y)
+    {
+        int idx = cell.Low - 1;
+        return x == 24f * ((idx / 8) + 1) || y == 24f * ((idx % 8) + 1);
+    }
 
     private static bool SameBits(AdjustResult a, AdjustResult b) =>
         a.Ok == b.Ok && a.Cell == b.Cell

@@ -1,0 +1,48 @@
+using System.CommandLine;
+using AcPhys.Spec.Invariants;
+using Spectre.Console;
+
+namespace AcPhys.Cli.Commands;
+
+/// <summary>The <c>invariants</c> verb: lists every invariant's ID, statement and source, as a table or as markdown.</summary>
+internal static class InvariantsCommand
+{
+    /// <summary>Builds the command.</summary>
+    /// <returns>The command.</returns>
+    public static Command Create()
+    {
+        var markdown = new Option<bool>("--markdown") { Description = "Print a markdown table (the source of docs/invariants.md)." };
+        var command = new Command("invariants", "List every invariant: ID, statement and the spec section it rests on.") { markdown };
+        command.SetAction(parse => Guard.Run("invariants", () => parse.GetValue(markdown) ? PrintMarkdown() : PrintTable()));
+        return command;
+    }
+
+    private static int PrintTable()
+    {
+        var table = new Table().AddColumns("ID", "Statement", "Source");
+        foreach (var invariant in InvariantCatalogue.All)
+        {
+            table.AddRow(new Text(invariant.Id), new Text(invariant.Statement), new Text(invariant.Source));
+        }
+
+        Terminal.Out.Write(table);
+        Terminal.Line($"{InvariantCatalogue.All.Count} invariants");
+        return ExitCodes.Ok;
+    }
+
+    private static int PrintMarkdown()
+    {
+        Terminal.Line("| ID | Statement | Source |");
+        Terminal.Line("|---|---|---|");
+        foreach (var invariant in InvariantCatalogue.All)
+        {
+            Terminal.Line($"| `{invariant.Id}` | {Cell(invariant.Statement)} | {Cell(invariant.Source)} |");
+        }
+
+        return ExitCodes.Ok;
+    }
+
+    private static string Cell(string text) => text.Replace("\\", "\\\\", StringComparison.Ordinal)
+        .Replace("|", "\\|", StringComparison.Ordinal)
+        .ReplaceLineEndings(" ");
+}

@@ -1,0 +1,20 @@
+namespace AcPhys.Cli;
+
+/// <summary>The process exit codes of <c>acphys</c> (docs/cli.md).</summary>
+internal static class ExitCodes
+{
+    /// <summary>Everything held (or the command just printed something).</summary>
+    public const int Ok = 0;
+
+    /// <summary>An invariant was violated.</summary>
+    public const int Violated = 1;
+
+    /// <summary>Usage or tool error: bad option, unknown ID, malformed input, an implementation that could not answer.</summary>
+    public const int ToolError = 2;
+
+    /// <summary>Interrupted by SIGINT (Ctrl-C): 128 + 2.</summary>
+    public const int Interrupted = 130;
+
+    /// <summary>Terminated by SIGTERM: 128 + 15.</summary>
+    public const int Terminated = 143;
+}

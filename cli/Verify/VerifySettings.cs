@@ -1,0 +1,132 @@
+using System.Globalization;
+using AcPhys.Spec.Faults;
+using AcPhys.Spec.Invariants;
+using AcPhys.Spec.Running;
+
+namespace AcPhys.Cli.Verify;
+
+/// <summary>The validated options of one <c>verify</c> run.</summary>
+internal sealed record VerifySettings
+{
+    /// <summary>Gets the budget, with the base seed this run uses filled in.</summary>
+    public required Profile Profile { get; init; }
+
+    /// <summary>Gets the base seed every invariant's seed is derived from.</summary>
+    public required ulong BaseSeed { get; init; }
+
+    /// <summary>Gets a value indicating whether the base seed was drawn fresh for this run (nightly) rather than fixed.</summary>
+    public required bool FreshBaseSeed { get; init; }
+
+    /// <summary>Gets a value indicating whether the base seed was given with <c>--base-seed</c>.</summary>
+    public required bool ExplicitBaseSeed { get; init; }
+
+    /// <summary>Gets the invariant IDs to run, in catalogue spelling; empty for all.</summary>
+    public required IReadOnlyList<string> Only { get; init; }
+
+    /// <summary>Gets the fixed seed for every invariant (<c>--seed</c>), if any.</summary>
+    public Seed? FixedSeed { get; init; }
+
+    /// <summary>Gets the planted fault switched on, if any.</summary>
+    public PlantedFault? Fault { get; init; }
+
+    /// <summary>Gets a value indicating whether only failures and the summary are printed.</summary>
+    public bool Quiet { get; init; }
+
+    /// <summary>Gets a value indicating whether the boundary-class distribution is printed.</summary>
+    public bool ShowClasses { get; init; }
+
+    /// <summary>Validates the raw option values.</summary>
+    /// <param name="profileName">The <c>--profile</c> value.</param>
+    /// <param name="only">The <c>--only</c> values (each may hold several comma-separated IDs).</param>
+    /// <param name="seed">The <c>--seed</c> value.</param>
+    /// <param name="baseSeed">The <c>--base-seed</c> value.</param>
+    /// <param name="fault">The <c>--fault</c> value.</param>
+    /// <returns>The settings.</returns>
+    /// <exception cref="UsageException">A value is unknown or malformed.</exception>
+    public static VerifySettings Parse(string? profileName, string[]? only, string? seed, string? baseSeed, string? fault)
+    {
+        var profile = Spec.Running.Profile.Find(profileName ?? "pr")
+            ?? throw new UsageException($"unknown profile '{profileName}' (known: pr, nightly)");
+
+        Seed? fixedSeed = null;
+        if (seed is not null)
+        {
+            if (!Seed.TryParse(seed, out var parsed))
+            {
+                throw new UsageException($"malformed seed '{seed}': expected seed,gamma[,size] (decimal or 0x-hex, gamma odd), e.g. 12345,67891");
+            }
+
+            fixedSeed = parsed;
+        }
+
+        ulong? explicitBase = null;
+        if (baseSeed is not null)
+        {
+            if (fixedSeed is not null)
+            {
+                throw new UsageException("--seed and --base-seed exclude each other (--seed fixes every invariant's seed; --base-seed derives them)");
+            }
+
+            explicitBase = ParseU64(baseSeed) ?? throw new UsageException($"malformed base seed '{baseSeed}': expected an unsigned 64-bit integer (decimal or 0x-hex)");
+        }
+
+        PlantedFault? planted = null;
+        if (fault is not null)
+        {
+            planted = PlantedFaults.Find(fault)
+                ?? throw new UsageException($"unknown fault '{fault}' (known: {string.Join(", ", PlantedFaults.All.Select(f => f.Id))})");
+        }
+
+        ulong runBase = explicitBase ?? profile.BaseSeed ?? Seed.Fresh().Value;
+        return new VerifySettings
+        {
+            Profile = profile with { BaseSeed = runBase },
+            BaseSeed = runBase,
+            FreshBaseSeed = explicitBase is null && profile.BaseSeed is null,
+            ExplicitBaseSeed = explicitBase is not null,
+            Only = ResolveIds(only),
+            FixedSeed = fixedSeed,
+            Fault = planted,
+        };
+    }
+
+    private static List<string> ResolveIds(string[]? values)
+    {
+        var ids = new List<string>();
+        if (values is null)
+        {
+            return ids;
+        }
+
+        foreach (var raw in values.SelectMany(v => v.Split(',', StringSplitOptions.TrimEntries | StringSplitOptions.RemoveEmptyEntries)))
+        {
+            var invariant = InvariantCatalogue.Find(raw)
+                ?? throw new UsageException($"unknown invariant '{raw}' (known: {string.Join(", ", InvariantCatalogue.All.Select(i => i.Id))})");
+            if (!InvariantCatalogue.Land.Any(i => ReferenceEquals(i, invariant)))
+            {
+                throw new UsageException($"invariant '{invariant.Id}' is not a LandDefs invariant; verify runs the LandDefs invariants only");
+            }
+
+            if (!ids.Contains(invariant.Id))
+            {
+                ids.Add(invariant.Id);
+            }
+        }
+
+        if (ids.Count == 0)
+        {
+            throw new UsageException("--only needs at least one invariant ID (see: acphys invariants)");
+        }
+
+        return ids;
+    }
+
+    private static ulong? ParseU64(string text)
+    {
+        text = text.Trim();
+        bool ok = text.StartsWith("0x", StringComparison.OrdinalIgnoreCase)
+            ? ulong.TryParse(text.AsSpan(2), NumberStyles.AllowHexSpecifier, CultureInfo.InvariantCulture, out ulong v)
+            : ulong.TryParse(text, NumberStyles.None, CultureInfo.InvariantCulture, out v);
+        return ok ? v : null;
+    }
+}

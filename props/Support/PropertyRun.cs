@@ -1,0 +1,80 @@
+using AcPhys.Spec.Adapters;
+using AcPhys.Spec.Cases;
+using AcPhys.Spec.Invariants;
+using AcPhys.Spec.Running;
+using Xunit.Abstractions;
+using Xunit.Sdk;
+
+namespace AcPhys.Props.Support;
+
+/// <summary>
+/// The bridge between FsCheck and xunit (FsCheck.Xunit is not served by the registry copy, so this small file does
+/// its job): runs an invariant as an FsCheck property with the CI seed, writes FsCheck's class distribution to the
+/// test output, and on failure throws with the seed and a one-line replay command.
+/// </summary>
+/// <remarks>
+/// Environment: <c>ACPHYS_PROFILE=nightly</c> (fresh seeds, 40× the cases), <c>ACPHYS_SEED=seed,gamma[,size]</c>
+/// (replay one seed for every property).
+/// </remarks>
+internal static class PropertyRun
+{
+    /// <summary>Gets the profile chosen by <c>ACPHYS_PROFILE</c> (default pr).</summary>
+    public static Profile Profile { get; } = Profile.Find(Environment.GetEnvironmentVariable("ACPHYS_PROFILE") ?? "pr") ?? Profile.Pr;
+
+    private static readonly ulong RunBase = Profile.BaseSeed ?? Seed.Fresh().Value;
+
+    /// <summary>Runs an invariant against an implementation and fails the test on a violation.</summary>
+    /// <param name="invariant">The invariant.</param>
+    /// <param name="output">xunit output.</param>
+    /// <param name="impl">The implementation (the reference when null).</param>
+    /// <returns>The result, for further assertions.</returns>
+    public static InvariantResult Check(Invariant<LandCase> invariant, ITestOutputHelper output, ICellPhysics? impl = null)
+    {
+        impl ??= ReferenceAdapter.Instance;
+        var seed = SeedFor(invariant.Id);
+        output.WriteLine($"{invariant.Id}: {invariant.Statement}");
+        output.WriteLine($"profile {Profile.Name}, seed {seed}");
+        var result = CatalogueRunner.Run(invariant, impl, Profile.CasesPerInvariant, seed, output.WriteLine);
+        output.WriteLine($"cases {result.Cases}, applicable {result.Applicable}, {result.Elapsed.TotalMilliseconds:F0} ms");
+        output.WriteLine("classes: " + string.Join(", ", result.Classes.OrderBy(k => k.Key).Select(k => $"{k.Key}={k.Value}")));
+        if (result.Status == ResultStatus.Failed)
+        {
+            throw new XunitException(FailureText(result, impl));
+        }
+
+        Assert.Equal(ResultStatus.Passed, result.Status);
+        return result;
+    }
+
+    /// <summary>Returns the seed for a property: <c>ACPHYS_SEED</c> when set, else derived from the profile's base seed.</summary>
+    /// <param name="invariantId">The invariant ID.</param>
+    /// <returns>The seed.</returns>
+    public static Seed SeedFor(string invariantId)
+    {
+        string? env = Environment.GetEnvironmentVariable("ACPHYS_SEED");
+        if (env is not null)
+        {
+            return Seed.TryParse(env, out var s) ? s : throw new XunitException($"ACPHYS_SEED='{env}' is not seed,gamma[,size]");
+        }
+
+        return Seed.Derive(RunBase, invariantId);
+    }
+
+    /// <summary>Formats a failure: invariant, shrunk and original case, seed, and the replay commands.</summary>
+    /// <param name="result">The failed result.</param>
+    /// <param name="impl">The implementation.</param>
+    /// <returns>The text.</returns>
+    public static string FailureText(InvariantResult result, ICellPhysics impl)
+    {
+        var replay = result.Replay ?? result.Seed;
+        string fault = impl.Name.StartsWith("reference+", StringComparison.Ordinal) ? " --fault " + impl.Name["reference+".Length..] : string.Empty;
+        return string.Join(
+            Environment.NewLine,
+            $"{result.Invariant.Id} violated by {impl.Name}: {result.Invariant.Statement}",
+            $"  shrunk:   {result.Violation}",
+            $"  original: {result.Original}",
+            $"  seed:     {result.Seed} (profile {Profile.Name})",
+            $"  replay:   ./acphys verify --only {result.Invariant.Id} --seed {replay}{fault}",
+            $"  or:       ACPHYS_SEED={result.Seed} dotnet test props -c Release --filter \"DisplayName~{result.Invariant.Id}\"");
+    }
+}
