@@ -13,6 +13,9 @@ public sealed record Profile(string Name, int CasesPerInvariant, ulong? BaseSeed
     /// <summary>Gets the nightly profile: 40× the cases, fresh seeds.</summary>
     public static Profile Nightly { get; } = new("nightly", 200_000, null, true);
 
+    /// <summary>Gets the mutation-testing profile: fixed seeds, fewer cases, no sweeps, so a mutant run stays short and a kill is never luck.</summary>
+    public static Profile Mutation { get; } = new("mutation", 1_000, 0xAC5EED0001UL, false);
+
     /// <summary>Gets a profile by name.</summary>
     /// <param name="name">pr or nightly.</param>
     /// <returns>The profile, or null.</returns>
@@ -20,6 +23,7 @@ public sealed record Profile(string Name, int CasesPerInvariant, ulong? BaseSeed
     {
         "pr" => Pr,
         "nightly" => Nightly,
+        "mutation" => Mutation,
         _ => null,
     };
 }
