@@ -4,8 +4,8 @@ namespace AcPhys.Cli;
 
 /// <summary>
 /// The two Spectre consoles of the tool: results on stdout, progress and errors on stderr. Redirected output gets a
-/// wide fixed width so tables do not wrap in CI logs (override with <c>ACPHYS_WIDTH</c>); colour follows Spectre's
-/// detection, so <c>NO_COLOR</c> and pipes give plain text.
+/// wide fixed width so tables do not wrap in CI logs (override with <c>ACPHYS_WIDTH</c>) and no colour; on a terminal
+/// colour follows Spectre's detection (<c>NO_COLOR</c> is honoured).
 /// </summary>
 internal static class Terminal
 {
@@ -41,7 +41,16 @@ internal static class Terminal
 
     private static IAnsiConsole Create(TextWriter writer, bool redirected)
     {
-        var console = AnsiConsole.Create(new AnsiConsoleSettings { Out = new AnsiConsoleOutput(writer) });
+        var settings = new AnsiConsoleSettings { Out = new AnsiConsoleOutput(writer) };
+        if (redirected)
+        {
+            // Logs and pipes get plain text, whatever TERM says.
+            settings.Ansi = AnsiSupport.No;
+            settings.ColorSystem = ColorSystemSupport.NoColors;
+            settings.Interactive = InteractionSupport.No;
+        }
+
+        var console = AnsiConsole.Create(settings);
         if (redirected)
         {
             console.Profile.Width = int.TryParse(Environment.GetEnvironmentVariable("ACPHYS_WIDTH"), out int w) && w > 20 ? w : RedirectedWidth;

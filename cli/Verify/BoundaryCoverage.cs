@@ -23,4 +23,20 @@ internal static class BoundaryCoverage
     /// <param name="classes">Hit counts by tag.</param>
     /// <returns>The count.</returns>
     public static int Hit(IReadOnlyDictionary<string, int> classes) => AllTags.Count(t => classes.GetValueOrDefault(t) > 0);
+
+    /// <summary>Returns a short coverage text: hits of all tags, plus what was missed or the rarest boundary coordinates.</summary>
+    /// <param name="classes">Hit counts by tag.</param>
+    /// <returns>E.g. <c>23: rarest subnormal 41, eps-edge 57</c> or <c>20, missed cell:env, coord:huge</c>.</returns>
+    public static string Brief(IReadOnlyDictionary<string, int> classes)
+    {
+        var missed = Missed(classes);
+        if (missed.Count > 0)
+        {
+            return $"{Hit(classes)}, missed {string.Join(", ", missed.Take(3))}{(missed.Count > 3 ? $" +{missed.Count - 3}" : string.Empty)}";
+        }
+
+        var rarest = BoundaryCoordinateTags.OrderBy(t => classes.GetValueOrDefault(t)).Take(3)
+            .Select(t => $"{t["coord:".Length..]} {Fmt.Count(classes.GetValueOrDefault(t))}");
+        return $"all {Hit(classes)}; rarest {string.Join(", ", rarest)}";
+    }
 }

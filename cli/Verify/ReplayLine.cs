@@ -1,8 +1,15 @@
+using AcPhys.Spec.Adapters;
+using AcPhys.Spec.Cases;
+using AcPhys.Spec.Invariants;
 using AcPhys.Spec.Running;
 
 namespace AcPhys.Cli.Verify;
 
-/// <summary>Builds the one command line that replays a failure, ready to copy into a shell.</summary>
+/// <summary>
+/// Builds the one command line that replays a failure, ready to copy into a shell, and checks that it does: the
+/// replay seed the runner reports is tried first, then the invariant's run seed (the whole generated run again,
+/// which is deterministic), so a line is only printed once it has been seen to reproduce the shrunk case.
+/// </summary>
 internal static class ReplayLine
 {
     /// <summary>Gets how to invoke the tool: <c>ACPHYS_COMMAND</c> (the <c>./acphys</c> wrapper sets it to its own path as typed), else <c>acphys</c>.</summary>
@@ -10,27 +17,24 @@ internal static class ReplayLine
 
     /// <summary>Returns the command line that reproduces one failed invariant.</summary>
     /// <param name="result">The failed result.</param>
-    /// <param name="settings">The run's settings (for the fault).</param>
-    /// <returns>The command line. A generated failure is replayed by its replay seed; an exhaustive-sweep failure by
-    /// re-running the invariant under the deterministic pr profile.</returns>
-    public static string For(InvariantResult result, VerifySettings settings)
+    /// <param name="settings">The run's settings (profile, fault).</param>
+    /// <param name="impl">The implementation the failure was found on.</param>
+    /// <returns>The line, and whether it was seen to reproduce the failure.</returns>
+    public static (string Line, bool Confirmed) For(InvariantResult result, VerifySettings settings, ICellPhysics impl)
     {
-        var words = new List<string> { Program, "verify", "--only", result.Invariant.Id };
-        if (result.Replay is Seed replay)
+        if (result.Replay is null && result.ExhaustiveCases > 0)
         {
-            words.AddRange(["--seed", replay.ToString()]);
-        }
-        else if (settings.FixedSeed is Seed fixedSeed)
-        {
-            words.AddRange(["--seed", fixedSeed.ToString()]);
+            // Found by an exhaustive sweep: deterministic, and the pr profile sweeps too.
+            return (Build(result, settings, seed: null, profile: "pr"), true);
         }
 
-        if (settings.Fault is not null)
+        if (result.Replay is Seed replay && Reproduces(result, impl, replay, 1))
         {
-            words.AddRange(["--fault", settings.Fault.Id]);
+            return (Build(result, settings, replay, settings.Profile.Name), true);
         }
 
-        return string.Join(' ', words.Select(Quote));
+        bool confirmed = Reproduces(result, impl, result.Seed, settings.Profile.CasesPerInvariant);
+        return (Build(result, settings, result.Seed, settings.Profile.Name), confirmed);
     }
 
     /// <summary>Quotes a word for a POSIX shell when it holds anything beyond the plain characters.</summary>
@@ -40,4 +44,37 @@ internal static class ReplayLine
         word.Length > 0 && word.All(c => char.IsAsciiLetterOrDigit(c) || "_-./,:=+@%".Contains(c))
             ? word
             : "'" + word.Replace("'", "'\\''", StringComparison.Ordinal) + "'";
+
+    private static bool Reproduces(InvariantResult result, ICellPhysics impl, Seed seed, int cases)
+    {
+        if (result.Invariant is not Invariant<LandCase> invariant || result.Violation is null)
+        {
+            return false;
+        }
+
+        var again = CatalogueRunner.Run(invariant, impl, cases, seed);
+        return again.Status == ResultStatus.Failed && again.Violation?.Case == result.Violation.Case;
+    }
+
+    private static string Build(InvariantResult result, VerifySettings settings, Seed? seed, string profile)
+    {
+        var words = new List<string> { Program, "verify" };
+        if (profile != "pr")
+        {
+            words.AddRange(["--profile", profile]);
+        }
+
+        words.AddRange(["--only", result.Invariant.Id]);
+        if (seed is Seed s)
+        {
+            words.AddRange(["--seed", s.ToString()]);
+        }
+
+        if (settings.Fault is not null)
+        {
+            words.AddRange(["--fault", settings.Fault.Id]);
+        }
+
+        return string.Join(' ', words.Select(Quote));
+    }
 }

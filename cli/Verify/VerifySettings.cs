@@ -93,7 +93,7 @@ internal sealed record VerifySettings
     private static List<string> ResolveIds(string[]? values)
     {
         var ids = new List<string>();
-        if (values is null)
+        if (values is null || values.Length == 0)
         {
             return ids;
         }

@@ -1,0 +1,119 @@
+using System.CommandLine;
+using System.Diagnostics;
+using AcPhys.Cli.Verify;
+using AcPhys.Spec.Adapters;
+using AcPhys.Spec.Faults;
+using AcPhys.Spec.Invariants;
+using AcPhys.Spec.Running;
+using Spectre.Console;
+
+namespace AcPhys.Cli.Commands;
+
+/// <summary>
+/// The <c>verify</c> verb: runs the LandDefs invariants against the bundled reference core (or the reference with a
+/// planted fault) and reports each with its cases, boundary coverage, verdict and, on failure, a replay line.
+/// </summary>
+internal static class VerifyCommand
+{
+    /// <summary>Builds the command.</summary>
+    /// <returns>The command.</returns>
+    public static Command Create()
+    {
+        var profile = new Option<string>("--profile")
+        {
+            Description = "Budget: pr (5,000 cases per invariant, fixed seeds, exhaustive sweeps) or nightly (200,000, fresh seeds).",
+            DefaultValueFactory = _ => "pr",
+        };
+        profile.AcceptOnlyFromAmong("pr", "nightly");
+        var only = new Option<string[]>("--only")
+        {
+            Description = "Run only these invariants (comma-separated or repeated; see: acphys invariants).",
+            HelpName = "ID[,ID...]",
+        };
+        var seed = new Option<string>("--seed")
+        {
+            Description = "Use this seed for every invariant (no exhaustive sweeps); a failure's replay seed reproduces it.",
+            HelpName = "seed,gamma[,size]",
+        };
+        var baseSeed = new Option<string>("--base-seed")
+        {
+            Description = "Derive every invariant's seed from this base (replays a whole nightly run; default: the profile's).",
+            HelpName = "N",
+        };
+        var fault = new Option<string>("--fault")
+        {
+            Description = "Switch on a planted fault in the reference, to show the suite catches it (see: acphys faults).",
+            HelpName = "FAULT",
+        };
+        var quiet = new Option<bool>("--quiet", "-q") { Description = "Print only failures and the summary line (for CI logs)." };
+        var classes = new Option<bool>("--classes") { Description = "Also print how often each boundary class was hit." };
+
+        var command = new Command("verify", "Run the invariant catalogue against the reference core (or a planted fault) and report.")
+        {
+            profile, only, seed, baseSeed, fault, quiet, classes,
+        };
+        command.SetAction(parse => Guard.Run("verify", () =>
+        {
+            var settings = VerifySettings.Parse(
+                parse.GetValue(profile), parse.GetValue(only), parse.GetValue(seed), parse.GetValue(baseSeed), parse.GetValue(fault))
+                with
+            {
+                Quiet = parse.GetValue(quiet),
+                ShowClasses = parse.GetValue(classes),
+            };
+            return Run(settings);
+        }));
+        return command;
+    }
+
+    private static int Run(VerifySettings settings)
+    {
+        ICellPhysics impl = settings.Fault is null ? ReferenceAdapter.Instance : PlantedFaults.Create(settings.Fault.Id);
+        var report = new VerifyReport(settings, impl);
+        if (!settings.Quiet)
+        {
+            report.WriteHeader();
+        }
+
+        var stopwatch = Stopwatch.StartNew();
+        var results = RunWithProgress(impl, settings);
+        stopwatch.Stop();
+
+        if (!settings.Quiet)
+        {
+            report.WriteTable(results);
+            if (settings.ShowClasses)
+            {
+                report.WriteClasses(results);
+            }
+
+            report.WriteNotTested(results);
+        }
+
+        report.WriteFailures(results);
+        report.WriteSummary(results, stopwatch.Elapsed);
+        return results.Any(r => r.Status == ResultStatus.Failed) ? ExitCodes.Violated : ExitCodes.Ok;
+    }
+
+    private static IReadOnlyList<InvariantResult> RunWithProgress(ICellPhysics impl, VerifySettings settings)
+    {
+        var only = settings.Only.Count == 0 ? null : settings.Only;
+        if (settings.Quiet || !Terminal.ShowsProgress)
+        {
+            return CatalogueRunner.RunCatalogue(impl, settings.Profile, only, settings.FixedSeed);
+        }
+
+        int total = only?.Count ?? InvariantCatalogue.Land.Count;
+        int done = 0;
+        IReadOnlyList<InvariantResult> results = [];
+        Terminal.Err.Status().Start($"checking {total} invariants against {impl.Name} ...", context =>
+        {
+            results = CatalogueRunner.RunCatalogue(impl, settings.Profile, only, settings.FixedSeed, result =>
+            {
+                done++;
+                context.Status(Markup.Escape($"checked {done}/{total} invariants (last: {result.Invariant.Id} {VerifyReport.Verdict(result.Status)}) ..."));
+            });
+        });
+        return results;
+    }
+}

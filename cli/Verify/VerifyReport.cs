@@ -1,0 +1,207 @@
+using AcPhys.Spec.Adapters;
+using AcPhys.Spec.Invariants;
+using AcPhys.Spec.Running;
+using Spectre.Console;
+
+namespace AcPhys.Cli.Verify;
+
+/// <summary>Prints a <c>verify</c> run: header, results table, failures with their replay lines, and the summary line.</summary>
+/// <param name="settings">The run's settings.</param>
+/// <param name="impl">The implementation under test.</param>
+internal sealed class VerifyReport(VerifySettings settings, ICellPhysics impl)
+{
+    /// <summary>Returns the verdict word of a status.</summary>
+    /// <param name="status">The status.</param>
+    /// <returns>PASS, FAIL or NOT TESTED.</returns>
+    public static string Verdict(ResultStatus status) => status switch
+    {
+        ResultStatus.Passed => "PASS",
+        ResultStatus.Failed => "FAIL",
+        _ => "NOT TESTED",
+    };
+
+    /// <summary>Writes what is about to run: implementation, profile, seeds.</summary>
+    public void WriteHeader()
+    {
+        int count = settings.Only.Count == 0 ? InvariantCatalogue.Land.Count : settings.Only.Count;
+        string budget = settings.FixedSeed is Seed s
+            ? $"profile {settings.Profile.Name}, seed {s} for every invariant (no exhaustive sweeps)"
+            : $"profile {settings.Profile.Name}: {Fmt.Count(settings.Profile.CasesPerInvariant)} generated cases per invariant"
+                + (settings.Profile.Exhaustive ? " + exhaustive sweeps" : string.Empty);
+        Terminal.Line($"verify: {count} invariant{(count == 1 ? string.Empty : "s")} against {impl.Name}; {budget}");
+        if (settings.Fault is not null)
+        {
+            Terminal.Line($"planted fault {settings.Fault.Id}: {settings.Fault.Title} (expected catchers: {string.Join(", ", settings.Fault.CaughtBy)})");
+        }
+
+        if (settings.FixedSeed is null)
+        {
+            Terminal.Line(settings.FreshBaseSeed
+                ? $"base seed {Fmt.Decimal(settings.BaseSeed)} (fresh for this run; replay the whole run with: {WholeRunReplay()})"
+                : $"base seed {Fmt.Decimal(settings.BaseSeed)} ({(settings.ExplicitBaseSeed ? "given" : "fixed by the profile")})");
+        }
+
+        Terminal.Line();
+    }
+
+    /// <summary>Writes one row per invariant.</summary>
+    /// <param name="results">The results.</param>
+    public void WriteTable(IReadOnlyList<InvariantResult> results)
+    {
+        var table = new Table()
+            .AddColumn("Invariant")
+            .AddColumn(new TableColumn("Cases (generated + exhaustive)").RightAligned())
+            .AddColumn(new TableColumn("Applicable").RightAligned())
+            .AddColumn(new TableColumn($"Boundary classes hit (of {BoundaryCoverage.AllTags.Count})"))
+            .AddColumn("Verdict")
+            .AddColumn(new TableColumn("Time").RightAligned());
+        foreach (var r in results)
+        {
+            string cases = r.Status == ResultStatus.NotTested ? "-"
+                : r.ExhaustiveCases > 0 ? $"{Fmt.Count(r.Cases)} + {Fmt.Count(r.ExhaustiveCases)}"
+                : Fmt.Count(r.Cases);
+            string applicable = r.Status == ResultStatus.NotTested ? "-" : $"{Fmt.Count(r.Applicable)} ({Fmt.Percent(r.Applicable, r.Cases)})";
+            table.AddRow(
+                new Text(r.Invariant.Id),
+                new Text(cases),
+                new Text(applicable),
+                new Text(r.Status switch
+                {
+                    ResultStatus.NotTested => "-",
+                    ResultStatus.Failed => $"{BoundaryCoverage.Hit(r.Classes)} (cases up to the first failure)",
+                    _ => BoundaryCoverage.Brief(r.Classes),
+                }),
+                new Markup(VerdictMarkup(r.Status)),
+                new Text(Fmt.Seconds(r.Elapsed)));
+        }
+
+        Terminal.Out.Write(table);
+    }
+
+    /// <summary>Writes the hit count of every boundary class, per invariant.</summary>
+    /// <param name="results">The results.</param>
+    public void WriteClasses(IReadOnlyList<InvariantResult> results)
+    {
+        var tested = results.Where(r => r.Status != ResultStatus.NotTested).ToArray();
+        var table = new Table().AddColumn("Boundary class")
+            .AddColumn(new TableColumn("Fewest hits").RightAligned())
+            .AddColumn(new TableColumn("Most hits").RightAligned())
+            .AddColumn("Missed by");
+        foreach (var tag in BoundaryCoverage.AllTags)
+        {
+            var counts = tested.Select(r => r.Classes.GetValueOrDefault(tag)).ToArray();
+            var missedBy = tested.Where(r => r.Classes.GetValueOrDefault(tag) == 0).Select(r => r.Invariant.Id).ToArray();
+            table.AddRow(
+                new Text(tag),
+                new Text(counts.Length == 0 ? "-" : Fmt.Count(counts.Min())),
+                new Text(counts.Length == 0 ? "-" : Fmt.Count(counts.Max())),
+                new Text(missedBy.Length == 0 ? "-" : string.Join(", ", missedBy)));
+        }
+
+        Terminal.Line();
+        Terminal.Line("Boundary classes (generated cases; a failing invariant counts only up to its first failure):");
+        Terminal.Out.Write(table);
+    }
+
+    /// <summary>Writes why invariants were not tested.</summary>
+    /// <param name="results">The results.</param>
+    public void WriteNotTested(IReadOnlyList<InvariantResult> results)
+    {
+        foreach (var r in results.Where(r => r.Status == ResultStatus.NotTested))
+        {
+            Terminal.Line($"NOT TESTED {r.Invariant.Id}: {r.NotTestedReason ?? "the implementation lacks an operation it needs"}");
+        }
+    }
+
+    /// <summary>Writes every failure: statement, shrunk case, message, original case, seeds and one replay line.</summary>
+    /// <param name="results">The results.</param>
+    public void WriteFailures(IReadOnlyList<InvariantResult> results)
+    {
+        foreach (var r in results.Where(r => r.Status == ResultStatus.Failed))
+        {
+            Terminal.Line();
+            Terminal.Out.MarkupLine($"[red bold]FAIL[/] [bold]{Markup.Escape(r.Invariant.Id)}[/] on {Markup.Escape(impl.Name)}");
+            Field("statement", r.Invariant.Statement);
+            bool swept = r.Replay is null && r.ExhaustiveCases > 0;
+            if (r.Violation is { } v)
+            {
+                Field(swept ? "case" : "shrunk", v.Case);
+                Field("message", v.Message);
+            }
+
+            if (swept)
+            {
+                Field("found by", $"the exhaustive sweep ({Fmt.Count(r.ExhaustiveCases)} cases): first violation in sweep order, not shrunk");
+            }
+            else if (r.Original is { } o && o != r.Violation)
+            {
+                Field("original", o.Case);
+                if (o.Message != r.Violation?.Message)
+                {
+                    Field(string.Empty, o.Message);
+                }
+            }
+
+            var (line, confirmed) = ReplayLine.For(r, settings, impl);
+            Field("seed", r.Seed.ToString());
+            Field("replay", line);
+            if (!confirmed)
+            {
+                Field(string.Empty, "(note: re-running this line did not reproduce the same shrunk case)");
+            }
+        }
+    }
+
+    /// <summary>Writes the last line: counts, profile, time.</summary>
+    /// <param name="results">The results.</param>
+    /// <param name="elapsed">Wall time of the run.</param>
+    public void WriteSummary(IReadOnlyList<InvariantResult> results, TimeSpan elapsed)
+    {
+        int passed = results.Count(r => r.Status == ResultStatus.Passed);
+        int failed = results.Count(r => r.Status == ResultStatus.Failed);
+        int notTested = results.Count(r => r.Status == ResultStatus.NotTested);
+        var details = new List<string> { "profile " + settings.Profile.Name };
+        if (settings.FixedSeed is Seed s)
+        {
+            details.Add("seed " + s);
+        }
+        else if (settings.FreshBaseSeed || settings.ExplicitBaseSeed)
+        {
+            details.Add("base seed " + Fmt.Decimal(settings.BaseSeed));
+        }
+
+        if (settings.Fault is not null)
+        {
+            details.Add("fault " + settings.Fault.Id);
+        }
+
+        details.Add(Fmt.Seconds(elapsed));
+        Terminal.Line();
+        Terminal.Line($"verify: {results.Count} invariants, {passed} passed, {failed} failed, {notTested} not tested ({string.Join(", ", details)})");
+    }
+
+    private static string VerdictMarkup(ResultStatus status) => status switch
+    {
+        ResultStatus.Passed => "[green]PASS[/]",
+        ResultStatus.Failed => "[red bold]FAIL[/]",
+        _ => "[yellow]NOT TESTED[/]",
+    };
+
+    private static void Field(string name, string value) => Terminal.Line($"  {name,-10} {value}");
+
+    private string WholeRunReplay()
+    {
+        var words = new List<string> { ReplayLine.Program, "verify", "--profile", settings.Profile.Name, "--base-seed", Fmt.Decimal(settings.BaseSeed) };
+        if (settings.Only.Count > 0)
+        {
+            words.AddRange(["--only", string.Join(',', settings.Only)]);
+        }
+
+        if (settings.Fault is not null)
+        {
+            words.AddRange(["--fault", settings.Fault.Id]);
+        }
+
+        return string.Join(' ', words.Select(ReplayLine.Quote));
+    }
+}

@@ -1,0 +1,64 @@
+using AcPhys.Props.Support;
+using AcPhys.Spec.Adapters;
+using AcPhys.Spec.Corpus;
+using AcPhys.Spec.Faults;
+using AcPhys.Spec.Invariants;
+using Xunit.Abstractions;
+
+namespace AcPhys.Props.Corpus;
+
+/// <summary>Every stored case replays: it parses, every invariant holds on it against the reference, and every fault it names is caught by it.</summary>
+public sealed class CorpusReplay(ITestOutputHelper output)
+{
+    public static TheoryData<string> Files
+    {
+        get
+        {
+            var data = new TheoryData<string>();
+            foreach (var f in Directory.EnumerateFiles(RepoPaths.Corpus, "*.json", SearchOption.AllDirectories).Order(StringComparer.Ordinal))
+            {
+                data.Add(Path.GetRelativePath(RepoPaths.Root, f));
+            }
+
+            return data;
+        }
+    }
+
+    [Fact(DisplayName = "corpus/ holds seeds to replay")]
+    public void CorpusIsNotEmpty() => Assert.True(Files.Count >= 10, $"only {Files.Count} corpus files");
+
+    [Theory(DisplayName = "Corpus case: every invariant holds on the reference and every named fault is caught")]
+    [MemberData(nameof(Files))]
+    public void Replays(string relativePath)
+    {
+        var entry = CorpusJson.ReadFile(Path.Combine(RepoPaths.Root, relativePath));
+        output.WriteLine($"{entry.Title}: {entry.Case}");
+        if (entry.Invariant is not null)
+        {
+            Assert.NotNull(InvariantCatalogue.Find(entry.Invariant));
+        }
+
+        var violation = InvariantCatalogue.CheckLandCase(ReferenceAdapter.Instance, entry.Case);
+        Assert.Null(violation);
+        foreach (var faultId in entry.Catches)
+        {
+            Assert.NotNull(PlantedFaults.Find(faultId));
+            var caught = InvariantCatalogue.CheckLandCase(PlantedFaults.Create(faultId), entry.Case);
+            output.WriteLine($"  {faultId}: {caught}");
+            Assert.NotNull(caught);
+        }
+    }
+
+    [Theory(DisplayName = "Corpus files round-trip through CorpusJson bit for bit")]
+    [MemberData(nameof(Files))]
+    public void RoundTrips(string relativePath)
+    {
+        var entry = CorpusJson.ReadFile(Path.Combine(RepoPaths.Root, relativePath));
+        var again = CorpusJson.Read(CorpusJson.Write(entry), "rewritten");
+        Assert.Equal(entry.Case.Cell, again.Case.Cell);
+        Assert.Equal(entry.Case.Lcoord, again.Case.Lcoord);
+        Assert.Equal(BitConverter.SingleToInt32Bits(entry.Case.X), BitConverter.SingleToInt32Bits(again.Case.X));
+        Assert.Equal(BitConverter.SingleToInt32Bits(entry.Case.Y), BitConverter.SingleToInt32Bits(again.Case.Y));
+        Assert.Equal(entry.Catches, again.Catches);
+    }
+}

@@ -1,0 +1,105 @@
+using AcPhys.Spec.Cases;
+using AcPhys.Spec.Corpus;
+using AcPhys.Spec.Generators;
+using FsCheck;
+using FsCheck.Fluent;
+
+namespace AcPhys.Props.Corpus;
+
+/// <summary>Bad corpus files are refused whole, with the file, the JSON path and what is wrong; never a stack trace or a half-read entry.</summary>
+public sealed class MalformedCorpusFiles
+{
+    private const string Good = """
+        {"format":"acphys-case","version":1,"kind":"land","title":"t","foundBy":"hand","catches":[],
+         "case":{"cell":"0xA9B40031","x":150,"y":-0.5,"lcoord":[1,2]}}
+        """;
+
+    public static TheoryData<string, string> Cases => new()
+    {
+        { "{", "not valid JSON" },
+        { "[]", "$: expected an object" },
+        { Good.Replace("acphys-case", "other", StringComparison.Ordinal), "$.format: expected \"acphys-case\"" },
+        { Good.Replace("\"version\":1", "\"version\":2", StringComparison.Ordinal), "$.version: expected 1" },
+        { Good.Replace("\"kind\":\"land\"", "\"kind\":\"walk\"", StringComparison.Ordinal), "$.kind: expected \"land\"" },
+        { Good.Replace("\"title\":\"t\",", string.Empty, StringComparison.Ordinal), "$.title: missing" },
+        { Good.Replace("\"foundBy\":\"hand\"", "\"foundBy\":\"me\"", StringComparison.Ordinal), "$.foundBy: expected hand, props, fuzz or spec" },
+        { Good.Replace("\"catches\":[]", "\"catches\":\"x\"", StringComparison.Ordinal), "$.catches: expected an array of fault ids" },
+        { Good.Replace("\"catches\":[]", "\"catches\":[1]", StringComparison.Ordinal), "$.catches[0]: expected a string" },
+        { Good.Replace("\"case\":{", "\"case\":[{", StringComparison.Ordinal).Replace("]}}", "]}]}", StringComparison.Ordinal), "$.case: expected an object" },
+        { Good.Replace("0xA9B40031", "A9B40031", StringComparison.Ordinal), "$.case.cell: expected \"0x\" and 8 hex digits" },
+        { Good.Replace("\"x\":150", "\"x\":\"150\"", StringComparison.Ordinal), "$.case.x: expected a number or \"NaN\"" },
+        { Good.Replace("\"x\":150", "\"x\":true", StringComparison.Ordinal), "$.case.x: expected a number" },
+        { Good.Replace("\"x\":150", "\"x\":1e39", StringComparison.Ordinal), "$.case.x: number overflows float32" },
+        { Good.Replace("\"y\":-0.5,", string.Empty, StringComparison.Ordinal), "$.case.y: missing" },
+        { Good.Replace("[1,2]", "[1]", StringComparison.Ordinal), "$.case.lcoord: expected [x, y]" },
+        { Good.Replace("[1,2]", "[1.5,2]", StringComparison.Ordinal), "$.case.lcoord[0]: expected a 32-bit integer" },
+        { Good.Replace("[1,2]", "[1,99999999999]", StringComparison.Ordinal), "$.case.lcoord[1]: expected a 32-bit integer" },
+    };
+
+    [Fact(DisplayName = "The well-formed sample parses (so each malformed variant differs by one defect)")]
+    public void GoodSampleParses() => Assert.Equal(-0.5f, CorpusJson.Read(Good, "good.json").Case.Y);
+
+    [Theory(DisplayName = "A malformed corpus file is refused with its JSON path and the problem")]
+    [MemberData(nameof(Cases))]
+    public void Refused(string json, string expected)
+    {
+        var e = Assert.Throws<CorpusFormatException>(() => CorpusJson.Read(json, "bad.json"));
+        Assert.StartsWith("bad.json: ", e.Message, StringComparison.Ordinal);
+        Assert.Contains(expected, e.Message, StringComparison.Ordinal);
+    }
+
+    [Fact(DisplayName = "A missing file is a CorpusFormatException naming the file")]
+    public void MissingFile()
+    {
+        var e = Assert.Throws<CorpusFormatException>(() => CorpusJson.ReadFile("/nonexistent/acphys.json"));
+        Assert.Contains("/nonexistent/acphys.json", e.Message, StringComparison.Ordinal);
+    }
+
+    [Fact(DisplayName = "Any text either parses or raises CorpusFormatException, nothing else (mangled good files)")]
+    public void MangledTextNeverThrowsAnythingElse() =>
+        Check.One(
+            Config.QuickThrowOnFailure.WithMaxTest(2000).WithReplay(0xBAD, 0x9E3779B97F4A7C15UL | 1),
+            Prop.ForAll(Gen.Zip(Gen.Choose(0, Good.Length - 1), Gen.Choose(0, 127)).ToArbitrary(), t =>
+            {
+                var chars = Good.ToCharArray();
+                chars[t.Item1] = (char)t.Item2;
+                try
+                {
+                    _ = CorpusJson.Read(new string(chars), "mangled.json");
+                }
+                catch (CorpusFormatException)
+                {
+                }
+            }));
+
+    [Fact(DisplayName = "Written entries read back to the same case for generated cases (NaN, -0, subnormals included)")]
+    public void WriteReadRoundTrips() =>
+        Check.One(
+            Config.QuickThrowOnFailure.WithMaxTest(2000).WithReplay(0xC0B, 0x9E3779B97F4A7C15UL | 1),
+            Prop.ForAll(LandGens.Cases.ToArbitrary(), c =>
+            {
+                var entry = new CorpusEntry { Title = "t", FoundBy = "props", Case = c };
+                LandCase back = CorpusJson.Read(CorpusJson.Write(entry), "rt").Case;
+                return back.Cell == c.Cell && back.Lcoord == c.Lcoord
+                    && BitConverter.SingleToInt32Bits(back.X) == BitConverter.SingleToInt32Bits(c.X)
+                    && BitConverter.SingleToInt32Bits(back.Y) == BitConverter.SingleToInt32Bits(c.Y);
+            }));
+
+    [Fact(DisplayName = "AtomicFile leaves no temp file behind and replaces the target whole")]
+    public void AtomicWrite()
+    {
+        string dir = Path.Combine(Path.GetTempPath(), "acphys-atomic-" + Guid.NewGuid().ToString("N"));
+        try
+        {
+            string path = Path.Combine(dir, "a.json");
+            AtomicFile.WriteAllText(path, "one");
+            AtomicFile.WriteAllText(path, "two");
+            Assert.Equal("two", File.ReadAllText(path));
+            Assert.Single(Directory.GetFiles(dir));
+        }
+        finally
+        {
+            Directory.Delete(dir, recursive: true);
+        }
+    }
+}
