@@ -21,13 +21,21 @@ internal static class Program
         };
 
         var parse = root.Parse(args);
-        if (parse.Action is ParseErrorAction errors)
+        if (parse.Errors.Count > 0 && parse.Action is ParseErrorAction)
         {
-            // System.CommandLine's own message (with its typo corrections), then a pointer to the help; exit 2, not its 1.
-            errors.ShowHelp = false;
-            errors.Invoke(parse);
-            string verb = parse.CommandResult.Command == root ? string.Empty : " " + parse.CommandResult.Command.Name;
-            Console.Error.WriteLine($"Run 'acphys{verb} --help' for usage.");
+            // System.CommandLine's own messages, a suggestion for a mistyped verb, then a pointer to the help; exit 2.
+            foreach (var error in parse.Errors)
+            {
+                Console.Error.WriteLine(error.Message);
+            }
+
+            if (parse.CommandResult.Command == root && Suggest.Closest(parse.UnmatchedTokens.FirstOrDefault(), root.Subcommands.Select(c => c.Name)) is { } verb)
+            {
+                Console.Error.WriteLine($"Did you mean '{verb}'?");
+            }
+
+            string command = parse.CommandResult.Command == root ? string.Empty : " " + parse.CommandResult.Command.Name;
+            Console.Error.WriteLine($"Run 'acphys{command} --help' for usage.");
             return ExitCodes.ToolError;
         }
 

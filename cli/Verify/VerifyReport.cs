@@ -177,7 +177,7 @@ internal sealed class VerifyReport(VerifySettings settings, ICellPhysics impl)
 
         details.Add(Fmt.Seconds(elapsed));
         Terminal.Line();
-        Terminal.Line($"verify: {results.Count} invariants, {passed} passed, {failed} failed, {notTested} not tested ({string.Join(", ", details)})");
+        Terminal.Line($"verify: {results.Count} invariant{(results.Count == 1 ? string.Empty : "s")}, {passed} passed, {failed} failed, {notTested} not tested ({string.Join(", ", details)})");
     }
 
     private static string VerdictMarkup(ResultStatus status) => status switch
