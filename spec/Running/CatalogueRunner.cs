@@ -81,12 +81,10 @@ public static class CatalogueRunner
             .WithName(invariant.Id)
             .WithMaxTest(cases)
             .WithMaxRejected(cases)
-            .WithRunner(runner)
-            .WithReplay(seed.Value, seed.Gamma, seed.Size ?? 0);
-        if (seed.Size is null)
-        {
-            config = config.WithNoReplay().WithReplay(seed.Value, seed.Gamma);
-        }
+            .WithRunner(runner);
+        config = seed.Size is int size
+            ? config.WithReplay(seed.Value, seed.Gamma, size)
+            : config.WithReplay(seed.Value, seed.Gamma);
 
         Check.One(config, Prop.ForAll(LandGens.Arbitrary, (Func<LandCase, Property>)Body));
         stopwatch.Stop();
