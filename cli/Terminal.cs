@@ -9,7 +9,7 @@ namespace AcPhys.Cli;
 /// </summary>
 internal static class Terminal
 {
-    private const int RedirectedWidth = 160;
+    private const int RedirectedWidth = 200;
 
     /// <summary>Gets the console for results (stdout).</summary>
     public static IAnsiConsole Out { get; } = Create(Console.Out, Console.IsOutputRedirected);
@@ -35,7 +35,7 @@ internal static class Terminal
     {
         if (!Console.IsErrorRedirected && Err.Profile.Capabilities.Ansi)
         {
-            Console.Error.Write("\u001b[?25h");
+            Console.Error.Write("\u001b[?25h\n");
         }
     }
 

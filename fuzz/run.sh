@@ -131,17 +131,22 @@ run_campaign() {
 
 stat_of() { awk -F' *: *' -v k="$2" '$1 == k { print $2; exit }' "$1"; }
 
-# time:NNN in AFL++ 4.x crash file names is milliseconds since that instance started.
-first_crash_ms() {
-    find "$1" -maxdepth 1 -type f -name 'id:*' 2>/dev/null | sed -n 's/.*,time:\([0-9]*\).*/\1/p' | sort -n | head -n 1
+# In AFL++ 4.04c crash file names, time:N is milliseconds since that instance began fuzzing (after its dry run)
+# and execs:N its execution count then. Prints "MS EXECS" of the earliest crash, or nothing.
+first_crash() {
+    find "$1" -maxdepth 1 -type f -name 'id:*' 2>/dev/null \
+        | sed -n 's/.*,time:\([0-9]*\),execs:\([0-9]*\).*/\1 \2/p' | sort -n | head -n 1
 }
+
+# "MS EXECS" -> "1.9s@28787"
+show_crash() { [[ -z $1 ]] || awk -v ms="${1% *}" -v ex="${1#* }" 'BEGIN { printf "%.1fs@%s", ms / 1000, ex }'; }
 
 summarize() {
     mkdir -p "$findings/crashes" "$findings/hangs"
     local summary="$run/summary.txt" total_execs=0 total_rate=0 total_crashes=0 total_hangs=0 first=""
     {
         echo "target=$target fault=${fault:-none} jobs=$jobs duration=${seconds}s timeout=${timeout_ms}ms"
-        printf '%-6s %12s %10s %7s %8s %6s %10s %12s\n' instance execs exec/s paths crashes hangs stability first-crash
+        printf '%-6s %12s %10s %7s %8s %6s %10s %16s\n' instance execs exec/s paths crashes hangs stability first-crash@execs
     } >"$summary"
     local dir inst stats execs rate paths crashes hangs stability fc f
     for dir in "$out"/*/; do
@@ -152,12 +157,12 @@ summarize() {
         crashes=$(stat_of "$stats" saved_crashes); crashes=${crashes:-$(stat_of "$stats" unique_crashes)}
         hangs=$(stat_of "$stats" saved_hangs); hangs=${hangs:-$(stat_of "$stats" unique_hangs)}
         stability=$(stat_of "$stats" stability)
-        fc=$(first_crash_ms "$dir/crashes")
-        printf '%-6s %12s %10s %7s %8s %6s %10s %12s\n' "$inst" "$execs" "$rate" "$paths" "$crashes" "$hangs" \
-            "$stability" "${fc:+$(awk -v ms="$fc" 'BEGIN { printf "%.1fs", ms / 1000 }')}" >>"$summary"
+        fc=$(first_crash "$dir/crashes")
+        printf '%-6s %12s %10s %7s %8s %6s %10s %16s\n' "$inst" "$execs" "$rate" "$paths" "$crashes" "$hangs" \
+            "$stability" "$(show_crash "$fc")" >>"$summary"
         total_execs=$((total_execs + execs)) total_crashes=$((total_crashes + crashes)) total_hangs=$((total_hangs + hangs))
         total_rate=$(awk -v a="$total_rate" -v b="$rate" 'BEGIN { print a + b }')
-        if [[ -n $fc ]] && { [[ -z $first ]] || ((fc < first)); }; then first=$fc; fi
+        if [[ -n $fc ]] && { [[ -z $first ]] || ((${fc% *} < ${first% *})); }; then first=$fc; fi
         for f in "$dir"/crashes/id:* "$dir"/hangs/id:*; do
             [[ -f $f ]] || continue
             local kind=crashes; [[ $f == */hangs/* ]] && kind=hangs
@@ -165,8 +170,8 @@ summarize() {
             echo "$inst-$(basename "$f" | sed 's/^id:\([0-9]*\).*/\1/') <- $f" >>"$findings/$kind/INDEX.txt"
         done
     done
-    printf '%-6s %12s %10s %7s %8s %6s %10s %12s\n' total "$total_execs" "$total_rate" "" "$total_crashes" "$total_hangs" "" \
-        "${first:+$(awk -v ms="$first" 'BEGIN { printf "%.1fs", ms / 1000 }')}" >>"$summary"
+    printf '%-6s %12s %10s %7s %8s %6s %10s %16s\n' total "$total_execs" "$total_rate" "" "$total_crashes" "$total_hangs" "" \
+        "$(show_crash "$first")" >>"$summary"
 
     local crash_files=("$findings"/crashes/*-[0-9]*)
     if [[ -f ${crash_files[0]} ]]; then

@@ -11,7 +11,7 @@ internal static class InvariantsCommand
     /// <returns>The command.</returns>
     public static Command Create()
     {
-        var markdown = new Option<bool>("--markdown") { Description = "Print a markdown table (the source of docs/invariants.md)." };
+        var markdown = new Option<bool>("--markdown") { Description = "Print the markdown of docs/invariants.md (regenerate it with: ./acphys invariants --markdown > docs/invariants.md)." };
         var command = new Command("invariants", "List every invariant: ID, statement and the spec section it rests on.") { markdown };
         command.SetAction(parse => Guard.Run("invariants", () => parse.GetValue(markdown) ? PrintMarkdown() : PrintTable()));
         return command;
@@ -32,17 +32,8 @@ internal static class InvariantsCommand
 
     private static int PrintMarkdown()
     {
-        Terminal.Line("| ID | Statement | Source |");
-        Terminal.Line("|---|---|---|");
-        foreach (var invariant in InvariantCatalogue.All)
-        {
-            Terminal.Line($"| `{invariant.Id}` | {Cell(invariant.Statement)} | {Cell(invariant.Source)} |");
-        }
-
+        // Exactly the text of docs/invariants.md (a props test keeps the file equal to InvariantDocs.Markdown()).
+        Console.Out.Write(InvariantDocs.Markdown());
         return ExitCodes.Ok;
     }
-
-    private static string Cell(string text) => text.Replace("\\", "\\\\", StringComparison.Ordinal)
-        .Replace("|", "\\|", StringComparison.Ordinal)
-        .ReplaceLineEndings(" ");
 }

@@ -21,8 +21,7 @@ internal static class VerifyCommand
     {
         var profile = new Option<string>("--profile")
         {
-            Description = "Budget: pr (5,000 cases per invariant, fixed seeds, exhaustive sweeps) or nightly (200,000, fresh seeds).",
-            DefaultValueFactory = _ => "pr",
+            Description = "Budget: pr (5,000 cases per invariant, fixed seeds, exhaustive sweeps) or nightly (200,000, fresh seeds). Default: $ACPHYS_PROFILE, else pr.",
         };
         profile.AcceptOnlyFromAmong("pr", "nightly");
         var only = new Option<string[]>("--only")
@@ -55,7 +54,7 @@ internal static class VerifyCommand
         command.SetAction(parse => Guard.Run("verify", () =>
         {
             var settings = VerifySettings.Parse(
-                parse.GetValue(profile), parse.GetValue(only), parse.GetValue(seed), parse.GetValue(baseSeed), parse.GetValue(fault))
+                parse.GetValue(profile) ?? DefaultProfile(), parse.GetValue(only), parse.GetValue(seed), parse.GetValue(baseSeed), parse.GetValue(fault))
                 with
             {
                 Quiet = parse.GetValue(quiet),
@@ -65,6 +64,9 @@ internal static class VerifyCommand
         }));
         return command;
     }
+
+    private static string DefaultProfile() =>
+        Environment.GetEnvironmentVariable("ACPHYS_PROFILE") is { Length: > 0 } fromEnvironment ? fromEnvironment : "pr";
 
     private static int Run(VerifySettings settings)
     {

@@ -176,7 +176,11 @@ internal sealed class VerifyReport(VerifySettings settings, ICellPhysics impl)
         }
 
         details.Add(Fmt.Seconds(elapsed));
-        Terminal.Line();
+        if (!settings.Quiet || failed > 0)
+        {
+            Terminal.Line();
+        }
+
         Terminal.Line($"verify: {results.Count} invariant{(results.Count == 1 ? string.Empty : "s")}, {passed} passed, {failed} failed, {notTested} not tested ({string.Join(", ", details)})");
     }
 

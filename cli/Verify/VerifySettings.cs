@@ -46,7 +46,7 @@ internal sealed record VerifySettings
     public static VerifySettings Parse(string? profileName, string[]? only, string? seed, string? baseSeed, string? fault)
     {
         var profile = Spec.Running.Profile.Find(profileName ?? "pr")
-            ?? throw new UsageException($"unknown profile '{profileName}' (known: pr, nightly)");
+            ?? throw new UsageException($"unknown profile '{profileName}' (known: pr, nightly; the default comes from ACPHYS_PROFILE when set)");
 
         Seed? fixedSeed = null;
         if (seed is not null)

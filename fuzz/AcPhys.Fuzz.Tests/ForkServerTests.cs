@@ -1,4 +1,3 @@
-using System.Diagnostics;
 using AcPhys.Fuzz.Runtime;
 using Xunit;
 
@@ -34,13 +33,19 @@ public sealed unsafe class ForkServerTests
         Posix.Close(control[0]);
         Posix.Close(status[1]);
         int toServer = control[1], fromServer = status[0];
+
+        // afl-fuzz's own pipe ends are not in the target; here they are, so keep them out of the decoy process.
+        Posix.Fcntl(toServer, Posix.FSetFd, Posix.FdCloexec);
+        Posix.Fcntl(fromServer, Posix.FSetFd, Posix.FdCloexec);
         string input = Path.GetTempFileName();
 
         // If the server misbehaves, closing the only write end of the status pipe turns a blocked read into EOF.
         using var watchdog = new Timer(_ => Posix.Close(Protocol.StatusFd), null, TimeSpan.FromSeconds(60), Timeout.InfiniteTimeSpan);
         try
         {
-            var server = Task.Run(() => ForkServer.Serve(shmId, Test, new InputSource(input)));
+            int exitCode = -1;
+            var server = new Thread(() => exitCode = ForkServer.Serve(shmId, Test, new InputSource(input))) { IsBackground = true };
+            server.Start();
 
             uint hello = Posix.ReadWord(fromServer);
             Assert.Equal(Protocol.OptEnabled, hello & Protocol.OptEnabled);
@@ -60,7 +65,7 @@ public sealed unsafe class ForkServerTests
             // afl-fuzz killed the previous "child" on a timeout: the server must survive and hand out a live pid.
             if (pid1 != Environment.ProcessId)
             {
-                Process.GetProcessById(pid1).Kill();
+                System.Diagnostics.Process.GetProcessById(pid1).Kill();
             }
 
             var (pid3, after) = RunOne(toServer, fromServer, map, input, "ok"u8, timedOut: true);
@@ -69,8 +74,8 @@ public sealed unsafe class ForkServerTests
 
             Posix.Close(toServer); // afl-fuzz goes away
             toServer = -1;
-            Assert.True(server.Wait(TimeSpan.FromSeconds(30)), "server did not stop at end of file");
-            Assert.Equal(0, server.Result);
+            Assert.True(server.Join(TimeSpan.FromSeconds(30)), "server did not stop at end of file");
+            Assert.Equal(0, exitCode);
         }
         finally
         {

@@ -9,6 +9,8 @@ internal static unsafe partial class Posix
     public const int IpcCreat = 0x200;
     public const int IpcRmid = 0;
     public const int FGetFd = 1;
+    public const int FSetFd = 2;
+    public const int FdCloexec = 1;
 
     [LibraryImport("libc", EntryPoint = "pipe", SetLastError = true)]
     public static partial int Pipe(int* fds);

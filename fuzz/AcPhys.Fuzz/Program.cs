@@ -4,9 +4,10 @@ using AcPhys.Fuzz.Runtime;
 // AcPhys.Fuzz TARGET [INPUT]          serve afl-fuzz (INPUT is afl's @@ file; stdin without it), or run INPUT once
 // AcPhys.Fuzz replay TARGET FILE...   replay saved inputs; exit 1 if any crashes
 // AcPhys.Fuzz seeds TARGET DIR        write the target's seed inputs into DIR
+// AcPhys.Fuzz bench TARGET [N]        time the test alone on N random 17-byte inputs (no afl-fuzz, no pipes)
 // AcPhys.Fuzz list                    list targets
 // TARGET may also come from ACPHYS_FUZZ_TARGET; the planted fault from ACPHYS_FAULT (unset or empty: correct core).
-const string Usage = "usage: AcPhys.Fuzz TARGET [INPUT] | replay TARGET FILE... | seeds TARGET DIR | list";
+const string Usage = "usage: AcPhys.Fuzz TARGET [INPUT] | replay TARGET FILE... | seeds TARGET DIR | bench TARGET [N] | list";
 
 string? fault = Environment.GetEnvironmentVariable("ACPHYS_FAULT") is { Length: > 0 } f ? f : null;
 var rest = new Queue<string>(args);
@@ -41,6 +42,20 @@ switch (command)
             }
 
             Console.WriteLine($"wrote {target.Seeds.Count} seed(s) to {dir}");
+            return 0;
+        }
+
+    case "bench":
+        {
+            if (rest.Count is < 1 or > 2 || Targets.Find(rest.Dequeue()) is not { } target || Create(target, fault) is not { } test)
+            {
+                Console.Error.WriteLine(Usage);
+                return 2;
+            }
+
+            int n = rest.Count > 0 ? int.Parse(rest.Dequeue(), System.Globalization.CultureInfo.InvariantCulture) : 1_000_000;
+            var (perInput, crashes) = Bench.Run(test, n);
+            Console.WriteLine($"{target.Name}: {n} inputs, {perInput.TotalMicroseconds:F2} us/input, {crashes} crash(es)");
             return 0;
         }
 

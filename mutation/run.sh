@@ -1,0 +1,127 @@
+#!/usr/bin/env bash
+# Mutation testing of core/ (AcPhys.Core) by the props/ test suite with Stryker.NET.
+#
+#   bash mutation/run.sh                    full run; publishes reports to mutation/reports/
+#   bash mutation/run.sh --since:main       only mutants in files changed since main (PR use)
+#   bash mutation/run.sh -m "**/LandDefs.cs" only one file
+#
+# Any argument is passed to dotnet-stryker. A run with arguments is partial: its reports stay in
+# mutation/StrykerOutput/<stamp>/ and mutation/reports/ (the committed full-run reports) is left alone.
+#
+# Stryker runs in a private copy of the working tree (tracked + untracked-not-ignored files and .git),
+# not in place: it rebuilds props/ and swaps the mutated AcPhys.Core.dll into props/bin, so a build in
+# the same tree during a run silently restores the original dll (every mutant then "survives"), and a
+# `dotnet test` in the tree during a run would test mutated code. See docs/mutation.md.
+#
+# Exit code: 0 when the score is at or above thresholds.break in mutation/stryker-config.json,
+# non-zero otherwise or when Stryker itself fails.
+set -euo pipefail
+
+script_dir="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+root="$(cd "$script_dir/.." && pwd)"
+config="$root/mutation/stryker-config.json"
+start=$(date +%s)
+
+cd "$root"
+dotnet tool restore >/dev/null
+
+export ACPHYS_PROFILE=mutation
+export DOTNET_ROLL_FORWARD=Major
+export DOTNET_CLI_TELEMETRY_OPTOUT=1
+export DOTNET_NOLOGO=1
+
+stamp="$(date -u +%Y%m%dT%H%M%SZ)"
+out="$root/mutation/StrykerOutput/$stamp"
+mkdir -p "$out"
+log="$out/stryker.log"
+
+# --- private copy of the tree -------------------------------------------------------------------
+work="$(mktemp -d "${TMPDIR:-/tmp}/acphys-mutation.XXXXXX")"
+cleanup() { rm -rf "$work"; }
+trap cleanup EXIT
+mkdir -p "$work/repo"
+if git -C "$root" rev-parse --is-inside-work-tree >/dev/null 2>&1; then
+    git -C "$root" ls-files -z -co --exclude-standard \
+        | tar -C "$root" --null -T - --ignore-failed-read -cf - 2>/dev/null \
+        | tar -C "$work/repo" -xf -
+    cp -a "$root/.git" "$work/repo/.git"
+else
+    tar -C "$root" --exclude=bin --exclude=obj --exclude=StrykerOutput --exclude=TestResults -cf - . \
+        | tar -C "$work/repo" -xf -
+fi
+# Tests find ../shared beside the repository root (props/Support/RepoPaths.cs).
+if [ -d "$root/../shared" ]; then
+    ln -s "$(cd "$root/../shared" && pwd)" "$work/shared"
+fi
+
+# --- run ----------------------------------------------------------------------------------------
+echo "mutation: stryker on core/ in $work/repo (profile $ACPHYS_PROFILE), output $out"
+set +e
+(cd "$work/repo/mutation" && dotnet stryker --skip-version-check --output "$out" "$@") 2>&1 | tee "$log"
+stryker_rc=${PIPESTATUS[0]}
+set -e
+elapsed=$(( $(date +%s) - start ))
+
+json="$out/reports/mutation-report.json"
+if [ ! -f "$json" ]; then
+    echo "mutation: FAILED: stryker exited $stryker_rc and wrote no report (log: $log)" >&2
+    exit "$(( stryker_rc == 0 ? 1 : stryker_rc ))"
+fi
+
+# Reports name files by the private copy's absolute path: make them repository-relative.
+for f in "$out"/reports/mutation-report.*; do
+    sed -i "s#$work/repo/##g" "$f"
+done
+
+# --- score --------------------------------------------------------------------------------------
+read -r killed timeout survived nocov compile ignored score < <(python3 - "$json" <<'PY'
+import json, sys
+d = json.load(open(sys.argv[1]))
+c = {}
+for f in d["files"].values():
+    for m in f["mutants"]:
+        c[m["status"]] = c.get(m["status"], 0) + 1
+k, t, s, n = c.get("Killed", 0), c.get("Timeout", 0), c.get("Survived", 0), c.get("NoCoverage", 0)
+valid = k + t + s + n
+score = 100.0 * (k + t) / valid if valid else 0.0
+print(k, t, s, n, c.get("CompileError", 0), c.get("Ignored", 0), f"{score:.2f}")
+PY
+)
+break_at=$(python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["stryker-config"]["thresholds"]["break"])' "$config")
+
+# --- publish (full runs only) -------------------------------------------------------------------
+if [ "$#" -eq 0 ]; then
+    dest="$root/mutation/reports"
+    mkdir -p "$dest"
+    stage="$(mktemp -d "$dest/.staging.XXXXXX")"
+    cp "$out/reports/mutation-report.md" "$out/reports/mutation-report.json" "$stage/"
+    html="$out/reports/mutation-report.html"
+    keep_html=0
+    if [ -f "$html" ] && [ "$(stat -c %s "$html")" -lt 2097152 ]; then
+        cp "$html" "$stage/"
+        keep_html=1
+    fi
+    # Same filesystem: each mv is an atomic rename, so a reader never sees a half-written report.
+    for f in "$stage"/*; do
+        mv -f "$f" "$dest/$(basename "$f")"
+    done
+    [ "$keep_html" -eq 1 ] || rm -f "$dest/mutation-report.html"
+    rmdir "$stage"
+    echo "mutation: reports published to mutation/reports/"
+else
+    echo "mutation: partial run (arguments: $*): mutation/reports/ left as it was"
+fi
+
+echo "mutation: score ${score} % (killed $killed, timeout $timeout, survived $survived, no coverage $nocov; compile errors $compile, ignored $ignored)"
+echo "mutation: runtime ${elapsed} s on $(nproc) cores; break threshold ${break_at} %; reports in $out/reports"
+
+if [ "$stryker_rc" -ne 0 ]; then
+    echo "mutation: FAILED: stryker exited $stryker_rc" >&2
+    exit "$stryker_rc"
+fi
+if python3 -c 'import sys; sys.exit(0 if float(sys.argv[1]) >= float(sys.argv[2]) else 1)' "$score" "$break_at"; then
+    echo "mutation: OK (${score} % >= ${break_at} %)"
+else
+    echo "mutation: FAILED: ${score} % is below the break threshold ${break_at} %" >&2
+    exit 3
+fi
