@@ -20,9 +20,9 @@ public sealed class PlantedFaultsAreCaught(ITestOutputHelper output)
         var impl = PlantedFaults.Create(faultId);
         var stopwatch = Stopwatch.StartNew();
         var caught = new List<InvariantResult>();
-        foreach (var invariant in InvariantCatalogue.Land)
+        foreach (var invariant in InvariantCatalogue.All)
         {
-            var result = CatalogueRunner.Run(invariant, impl, Profile.Pr.CasesPerInvariant, PropertyRun.SeedFor(invariant.Id));
+            var result = invariant.Run(impl, Profile.Pr.CasesPerInvariant, PropertyRun.SeedFor(invariant.Id));
             if (result.Status == ResultStatus.Failed)
             {
                 caught.Add(result);
@@ -43,16 +43,16 @@ public sealed class PlantedFaultsAreCaught(ITestOutputHelper output)
         foreach (var fault in PlantedFaults.All)
         {
             var impl = PlantedFaults.Create(fault.Id);
-            foreach (var invariant in InvariantCatalogue.Land)
+            foreach (var invariant in InvariantCatalogue.All)
             {
-                if (CatalogueRunner.Run(invariant, impl, 2000, PropertyRun.SeedFor(invariant.Id)).Status == ResultStatus.Failed)
+                if (invariant.Run(impl, 2000, PropertyRun.SeedFor(invariant.Id)).Status == ResultStatus.Failed)
                 {
                     biters.Add(invariant.Id);
                 }
             }
         }
 
-        var toothless = InvariantCatalogue.Land.Select(i => i.Id).Where(id => !biters.Contains(id)).ToList();
+        var toothless = InvariantCatalogue.All.Select(i => i.Id).Where(id => !biters.Contains(id)).ToList();
         output.WriteLine("invariants that caught a fault: " + string.Join(", ", biters.Order()));
         Assert.Empty(toothless);
     }
@@ -65,8 +65,7 @@ public sealed class PlantedFaultsAreCaught(ITestOutputHelper output)
             var impl = PlantedFaults.Create(fault.Id);
             foreach (var id in fault.CaughtBy)
             {
-                var invariant = (Invariant<AcPhys.Spec.Cases.LandCase>)InvariantCatalogue.Find(id)!;
-                var result = CatalogueRunner.Run(invariant, impl, Profile.Pr.CasesPerInvariant, PropertyRun.SeedFor(id));
+                var result = InvariantCatalogue.Find(id)!.Run(impl, Profile.Pr.CasesPerInvariant, PropertyRun.SeedFor(id));
                 Assert.True(result.Status == ResultStatus.Failed, $"{fault.Id} should be caught by {id} but was not");
             }
         }

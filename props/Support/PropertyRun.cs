@@ -1,5 +1,4 @@
 using AcPhys.Spec.Adapters;
-using AcPhys.Spec.Cases;
 using AcPhys.Spec.Invariants;
 using AcPhys.Spec.Running;
 using Xunit.Abstractions;
@@ -28,13 +27,13 @@ internal static class PropertyRun
     /// <param name="output">xunit output.</param>
     /// <param name="impl">The implementation (the reference when null).</param>
     /// <returns>The result, for further assertions.</returns>
-    public static InvariantResult Check(Invariant<LandCase> invariant, ITestOutputHelper output, ICellPhysics? impl = null)
+    public static InvariantResult Check(Invariant invariant, ITestOutputHelper output, ICellPhysics? impl = null)
     {
         impl ??= ReferenceAdapter.Instance;
         var seed = SeedFor(invariant.Id);
         output.WriteLine($"{invariant.Id}: {invariant.Statement}");
         output.WriteLine($"profile {Profile.Name}, seed {seed}");
-        var result = CatalogueRunner.Run(invariant, impl, Profile.CasesPerInvariant, seed, output.WriteLine);
+        var result = invariant.Run(impl, Profile.CasesPerInvariant, seed, output.WriteLine);
         output.WriteLine($"cases {result.Cases}, applicable {result.Applicable}, {result.Elapsed.TotalMilliseconds:F0} ms");
         output.WriteLine("classes: " + string.Join(", ", result.Classes.OrderBy(k => k.Key).Select(k => $"{k.Key}={k.Value}")));
         if (result.Status == ResultStatus.Failed)

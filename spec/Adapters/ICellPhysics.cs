@@ -19,6 +19,9 @@ public interface ICellPhysics
     /// <summary>Gets the operations this implementation offers.</summary>
     Op Ops { get; }
 
+    /// <summary>Gets the containing-cell pick policy the implementation declares (retail when it says nothing).</summary>
+    PickPolicy Pick { get; }
+
     /// <summary><c>blockid_to_lcoord</c>: (8·bx, 8·by) of the id's landblock.</summary>
     /// <param name="id">Any id.</param>
     /// <param name="lcoord">The result on success.</param>
@@ -56,4 +59,22 @@ public interface ICellPhysics
     /// <param name="y">Block-frame y.</param>
     /// <returns>The outcome.</returns>
     AdjustResult AdjustToOutside(CellId id, float x, float y);
+
+    /// <summary><c>outside_cells</c>: the land cells the spheres touch, in insertion order, every landblock loaded.</summary>
+    /// <param name="cell">The position's cell id.</param>
+    /// <param name="spheres">Centres in <paramref name="cell"/>'s block frame.</param>
+    /// <returns>The cell ids in insertion order.</returns>
+    IReadOnlyList<CellId> OutsideCells(CellId cell, IReadOnlyList<Sphere> spheres);
+
+    /// <summary><c>find_cell</c> on open land: the candidate cells and the containing cell.</summary>
+    /// <param name="cell">The position's cell id.</param>
+    /// <param name="spheres">Centres in <paramref name="cell"/>'s block frame; sphere 0 decides the pick.</param>
+    /// <param name="current">The current cell, or <see cref="CellId.None"/>.</param>
+    /// <returns>The cells and the containing cell (<see cref="CellId.None"/> when none).</returns>
+    FindCellResult FindCell(CellId cell, IReadOnlyList<Sphere> spheres, CellId current);
 }
+
+/// <summary>The answer of <c>find_cell</c>.</summary>
+/// <param name="Cells">Candidate cells in insertion order.</param>
+/// <param name="Containing">The containing cell, or <see cref="CellId.None"/>.</param>
+public sealed record FindCellResult(IReadOnlyList<CellId> Cells, CellId Containing);

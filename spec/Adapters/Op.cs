@@ -25,8 +25,17 @@ public enum Op
     /// <summary><c>adjust_to_outside</c>.</summary>
     AdjustToOutside = 1 << 5,
 
+    /// <summary><c>outside_cells</c>: the sphere variant of add_all_outside_cells on open land.</summary>
+    OutsideCells = 1 << 6,
+
+    /// <summary><c>find_cell</c>: find_cell_list (open land today; scenes later).</summary>
+    FindCell = 1 << 7,
+
     /// <summary>Every LandDefs operation.</summary>
     LandDefs = BlockIdToLcoord | GidToLcoord | LcoordToGid | InboundValidCellId | GetOutsideLcoord | AdjustToOutside,
+
+    /// <summary>Every operation of protocol v1 on open land.</summary>
+    All = LandDefs | OutsideCells | FindCell,
 }
 
 /// <summary>Protocol names of <see cref="Op"/> values.</summary>
@@ -40,6 +49,8 @@ public static class OpNames
         (Op.InboundValidCellId, "inbound_valid_cellid"),
         (Op.GetOutsideLcoord, "get_outside_lcoord"),
         (Op.AdjustToOutside, "adjust_to_outside"),
+        (Op.OutsideCells, "outside_cells"),
+        (Op.FindCell, "find_cell"),
     ];
 
     /// <summary>Returns the protocol names of every flag set in <paramref name="ops"/>.</summary>

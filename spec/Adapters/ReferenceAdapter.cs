@@ -3,16 +3,26 @@ using AcPhys.Core;
 namespace AcPhys.Spec.Adapters;
 
 /// <summary>The bundled reference core (AcPhys.Core) behind the adapter contract.</summary>
-public sealed class ReferenceAdapter : ICellPhysics
+/// <param name="pick">The pick policy to declare and use.</param>
+public sealed class ReferenceAdapter(PickPolicy pick = PickPolicy.Retail) : ICellPhysics
 {
-    /// <summary>Gets the shared instance (the adapter is stateless).</summary>
+    [ThreadStatic]
+    private static CellArray? scratch;
+
+    /// <summary>Gets the shared retail instance (the adapter is stateless).</summary>
     public static ReferenceAdapter Instance { get; } = new();
 
-    /// <inheritdoc/>
-    public string Name => "reference";
+    /// <summary>Gets the shared current-cell-first instance.</summary>
+    public static ReferenceAdapter CurrentFirst { get; } = new(PickPolicy.CurrentFirst);
 
     /// <inheritdoc/>
-    public Op Ops => Op.LandDefs;
+    public string Name => pick == PickPolicy.Retail ? "reference" : "reference(current-first)";
+
+    /// <inheritdoc/>
+    public Op Ops => Op.All;
+
+    /// <inheritdoc/>
+    public PickPolicy Pick => pick;
 
     /// <inheritdoc/>
     public bool BlockIdToLcoord(CellId id, out Lcoord lcoord) => LandDefs.BlockIdToLcoord(id, out lcoord);
@@ -34,5 +44,22 @@ public sealed class ReferenceAdapter : ICellPhysics
     {
         bool ok = LandDefs.AdjustToOutside(ref id, ref x, ref y);
         return new AdjustResult(ok, id, x, y);
+    }
+
+    /// <inheritdoc/>
+    public IReadOnlyList<CellId> OutsideCells(CellId cell, IReadOnlyList<Sphere> spheres)
+    {
+        var array = scratch ??= new CellArray();
+        array.Reset();
+        OutdoorCells.AddAllOutsideCells(array, cell, System.Numerics.Vector3.Zero, [.. spheres], OpenLand.Instance);
+        return array.ToIdArray();
+    }
+
+    /// <inheritdoc/>
+    public FindCellResult FindCell(CellId cell, IReadOnlyList<Sphere> spheres, CellId current)
+    {
+        var array = scratch ??= new CellArray();
+        var containing = CellQuery.FindCellListOutdoor(array, cell, [.. spheres], current, pick, OpenLand.Instance);
+        return new FindCellResult(array.ToIdArray(), containing);
     }
 }

@@ -26,6 +26,34 @@ public sealed record CorpusEntry
     /// <summary>Gets the planted faults this case must expose.</summary>
     public IReadOnlyList<string> Catches { get; init; } = [];
 
-    /// <summary>Gets the case.</summary>
-    public required LandCase Case { get; init; }
+    /// <summary>Gets the LandDefs case, for kind <c>land</c>.</summary>
+    public LandCase? Case { get; init; }
+
+    /// <summary>Gets the walk, for kind <c>walk</c>.</summary>
+    public Walk? Walk { get; init; }
+
+    /// <summary>Gets the kind: <c>land</c> or <c>walk</c>.</summary>
+    public string Kind => Walk is null ? "land" : "walk";
+
+    /// <summary>Wraps a failing case of any supported type as an entry, or returns null for an unsupported type.</summary>
+    /// <param name="c">A LandCase, Walk or OutdoorCase (stored as a walk with no steps).</param>
+    /// <param name="title">Title.</param>
+    /// <param name="invariant">Invariant ID.</param>
+    /// <param name="foundBy">What found it.</param>
+    /// <param name="seed">Seed text.</param>
+    /// <returns>The entry, or null.</returns>
+    public static CorpusEntry? From(object? c, string title, string? invariant, string foundBy, string? seed = null) => c switch
+    {
+        LandCase land => new CorpusEntry { Title = title, Invariant = invariant, FoundBy = foundBy, Seed = seed, Case = land },
+        Walk walk => new CorpusEntry { Title = title, Invariant = invariant, FoundBy = foundBy, Seed = seed, Walk = walk },
+        OutdoorCase q => new CorpusEntry
+        {
+            Title = title,
+            Invariant = invariant,
+            FoundBy = foundBy,
+            Seed = seed,
+            Walk = new Walk(q.Cell, System.Numerics.Vector3.Zero, q.Spheres.Select(s => new BodySphere(s.Center, s.Radius)).ToArray(), []),
+        },
+        _ => null,
+    };
 }

@@ -29,7 +29,7 @@ public static class CorpusJson
             w.WriteStartObject();
             w.WriteString("format", FormatName);
             w.WriteNumber("version", CorpusEntry.CurrentVersion);
-            w.WriteString("kind", "land");
+            w.WriteString("kind", entry.Kind);
             w.WriteString("title", entry.Title);
             if (entry.Invariant is not null)
             {
@@ -49,15 +49,24 @@ public static class CorpusJson
             }
 
             w.WriteEndArray();
-            w.WriteStartObject("case");
-            w.WriteString("cell", CellIdText.Format(entry.Case.Cell));
-            WriteFloat(w, "x", entry.Case.X);
-            WriteFloat(w, "y", entry.Case.Y);
-            w.WriteStartArray("lcoord");
-            w.WriteNumberValue(entry.Case.Lcoord.X);
-            w.WriteNumberValue(entry.Case.Lcoord.Y);
-            w.WriteEndArray();
-            w.WriteEndObject();
+            if (entry.Walk is { } walk)
+            {
+                WalkJson.Write(w, walk);
+            }
+            else
+            {
+                var c = entry.Case ?? throw new ArgumentException("an entry needs a case or a walk", nameof(entry));
+                w.WriteStartObject("case");
+                w.WriteString("cell", CellIdText.Format(c.Cell));
+                WriteFloat(w, "x", c.X);
+                WriteFloat(w, "y", c.Y);
+                w.WriteStartArray("lcoord");
+                w.WriteNumberValue(c.Lcoord.X);
+                w.WriteNumberValue(c.Lcoord.Y);
+                w.WriteEndArray();
+                w.WriteEndObject();
+            }
+
             w.WriteEndObject();
         }
 
@@ -88,7 +97,8 @@ public static class CorpusJson
             Require(Str(root, "format", source) == FormatName, source, "$.format", $"expected \"{FormatName}\"");
             var version = Prop(root, "version", source);
             Require(version.ValueKind == JsonValueKind.Number && version.TryGetInt32(out int v) && v == CorpusEntry.CurrentVersion, source, "$.version", $"expected {CorpusEntry.CurrentVersion}");
-            Require(Str(root, "kind", source) == "land", source, "$.kind", "expected \"land\" (the only kind in version 1)");
+            string kind = Str(root, "kind", source);
+            Require(kind is "land" or "walk", source, "$.kind", "expected \"land\" or \"walk\"");
             string title = Str(root, "title", source);
             string foundBy = Str(root, "foundBy", source);
             Require(foundBy is "hand" or "props" or "fuzz" or "spec", source, "$.foundBy", "expected hand, props, fuzz or spec");
@@ -105,6 +115,19 @@ public static class CorpusJson
                     catches.Add(item.GetString()!);
                     i++;
                 }
+            }
+
+            if (kind == "walk")
+            {
+                return new CorpusEntry
+                {
+                    Title = title,
+                    Invariant = invariant,
+                    FoundBy = foundBy,
+                    Seed = seed,
+                    Catches = catches,
+                    Walk = WalkJson.Read(Prop(root, "walk", source), source),
+                };
             }
 
             var caseElement = Prop(root, "case", source);
@@ -151,7 +174,7 @@ public static class CorpusJson
         return Read(text, path);
     }
 
-    private static void WriteFloat(Utf8JsonWriter w, string name, float value)
+    internal static void WriteFloat(Utf8JsonWriter w, string name, float value)
     {
         if (float.IsFinite(value))
         {
@@ -165,10 +188,10 @@ public static class CorpusJson
         }
     }
 
-    private static float Float(JsonElement parent, string name, string source)
+    internal static float Float(JsonElement parent, string name, string source, string at = "$.case")
     {
-        var e = Prop(parent, name, source, "$.case");
-        string path = "$.case." + name;
+        var e = Prop(parent, name, source, at);
+        string path = at + "." + name;
         if (e.ValueKind == JsonValueKind.String)
         {
             return e.GetString() switch
@@ -188,7 +211,7 @@ public static class CorpusJson
         return f;
     }
 
-    private static JsonElement Prop(JsonElement parent, string name, string source, string at = "$")
+    internal static JsonElement Prop(JsonElement parent, string name, string source, string at = "$")
     {
         if (!parent.TryGetProperty(name, out var e))
         {
@@ -198,7 +221,7 @@ public static class CorpusJson
         return e;
     }
 
-    private static string Str(JsonElement parent, string name, string source, string at = "$")
+    internal static string Str(JsonElement parent, string name, string source, string at = "$")
     {
         var e = Prop(parent, name, source, at);
         Require(e.ValueKind == JsonValueKind.String, source, $"{at}.{name}", "expected a string");
@@ -216,7 +239,7 @@ public static class CorpusJson
         return e.GetString();
     }
 
-    private static void Require(bool condition, string source, string path, string message)
+    internal static void Require(bool condition, string source, string path, string message)
     {
         if (!condition)
         {

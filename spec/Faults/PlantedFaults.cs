@@ -54,9 +54,75 @@ public static class PlantedFaults
         "facts §7 #15: ACE tests only bx; retail tests bx and by, so 0x00FF0001 is valid in ACE.",
         ["MAP-EDGE"]);
 
+    /// <summary>The #106 clamp.</summary>
+    public static readonly PlantedFault Clamp106 = new(
+        "clamp-106",
+        "candidates and the containing pick clamped to the current landblock",
+        "seed (acdream #106): the port clamped add_all_outside_cells and the pick to the current block's 8 × 8 grid; one step over a block line left no candidate containing the centre and the cell froze (10,449 frames in one capture).",
+        ["NO-BOUNDARY-FREEZE", "COVERAGE", "NEIGHBOUR-SYMMETRY"]);
+
+    /// <summary>Neighbours from in-cell coordinates.</summary>
+    public static readonly PlantedFault InCellNeighbours = new(
+        "in-cell-neighbours",
+        "check_add_cell_boundary works on the in-block cell index, so no neighbour across a block line is added",
+        "issue #3: an early ACE revision computed neighbours from in-cell (block-local) coordinates instead of global lcoords.",
+        ["COVERAGE"]);
+
+    /// <summary>Else-branch diagonal.</summary>
+    public static readonly PlantedFault ElseDiagonal = new(
+        "else-diagonal",
+        "the west-side test is an else branch of the east-side test",
+        "issue #5: early ACE's else-branch; with r > 12 both sides must be added (facts §3.2).",
+        ["COVERAGE"]);
+
+    /// <summary>Inverted sphere-count guard.</summary>
+    public static readonly PlantedFault SphereGuardInverted = new(
+        "sphere-guard-inverted",
+        "add_all_outside_cells takes the no-sphere path when there are spheres",
+        "issue #5: an inverted numSphere guard adds only the position's own cell.",
+        ["COVERAGE"]);
+
+    /// <summary>One sphere's re-seated cell leaks into the next.</summary>
+    public static readonly PlantedFault SphereLeak = new(
+        "sphere-leak",
+        "the next sphere starts from the previous sphere's re-seated cell instead of the position's",
+        "issue #5: a port reused the cell variable across the sphere loop (facts §3.3 a: each sphere starts from position.ObjCellID).",
+        ["COVERAGE", "SOUNDNESS"]);
+
+    /// <summary>Array not reset between calls.</summary>
+    public static readonly PlantedFault NoReset = new(
+        "no-reset",
+        "the cell array keeps the previous query's cells",
+        "facts §7 #6: ACE's find_cell_list does not clear its dictionary; retail truncates the array.",
+        ["SOUNDNESS"]);
+
+    /// <summary>Declares hysteresis, does not implement it.</summary>
+    public static readonly PlantedFault NoHysteresis = new(
+        "no-hysteresis",
+        "declares the current-cell-first pick but implements the retail rule",
+        "issue #4: acdream's hysteresis lost in a refactor; the cell flickers on a shared edge.",
+        ["HYSTERESIS"]);
+
+    /// <summary>Declares the retail pick, keeps the current cell.</summary>
+    public static readonly PlantedFault StickyPick = new(
+        "sticky-pick",
+        "declares the retail pick but keeps the current cell while it contains the centre",
+        "issue #3: a retail-declared port with a hidden hysteresis; on a shared edge the cell then depends on the path, not the position.",
+        ["STABLE-PICK", "WALK-REVERSIBLE"]);
+
     /// <summary>Gets every planted fault.</summary>
     public static IReadOnlyList<PlantedFault> All { get; } =
-        [TruncFloor, NanAsZero, MapEdge2040, SignExtendBlockY, DropBlockLength, NoEpsSnap, InboundXOnly];
+    [
+        TruncFloor, NanAsZero, MapEdge2040, SignExtendBlockY, DropBlockLength, NoEpsSnap, InboundXOnly,
+        Clamp106, InCellNeighbours, ElseDiagonal, SphereGuardInverted, SphereLeak, NoReset, NoHysteresis, StickyPick,
+    ];
+
+    /// <summary>No defect: the fault model as it is when nothing is switched on (tests compare it with core).</summary>
+    internal static readonly PlantedFault NoFault = new("none", "no defect", "the model itself", []);
+
+    /// <summary>Returns the fault model with nothing switched on; it must answer exactly as the reference core.</summary>
+    /// <returns>The model.</returns>
+    internal static ICellPhysics Model() => new FaultyPhysics(NoFault);
 
     /// <summary>Finds a fault by id.</summary>
     /// <param name="id">The fault id.</param>
@@ -71,6 +137,6 @@ public static class PlantedFaults
     {
         var fault = Find(id) ?? throw new ArgumentException(
             $"unknown fault '{id}'; known: {string.Join(", ", All.Select(f => f.Id))}", nameof(id));
-        return new FaultyLandDefs(fault);
+        return new FaultyPhysics(fault);
     }
 }

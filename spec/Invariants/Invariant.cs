@@ -1,4 +1,7 @@
+using AcPhys.Core;
 using AcPhys.Spec.Adapters;
+using AcPhys.Spec.Cases;
+using AcPhys.Spec.Running;
 
 namespace AcPhys.Spec.Invariants;
 
@@ -10,12 +13,14 @@ public abstract class Invariant
     /// <param name="statement">One sentence of what it means.</param>
     /// <param name="source">The spec section(s) it implements.</param>
     /// <param name="requires">Operations an implementation must offer for it to be tested.</param>
-    protected Invariant(string id, string statement, string source, Op requires)
+    /// <param name="requiresPick">The pick policy the invariant is about, or null for any.</param>
+    protected Invariant(string id, string statement, string source, Op requires, PickPolicy? requiresPick)
     {
         Id = id;
         Statement = statement;
         Source = source;
         Requires = requires;
+        RequiresPick = requiresPick;
     }
 
     /// <summary>Gets the stable ID.</summary>
@@ -30,13 +35,39 @@ public abstract class Invariant
     /// <summary>Gets the operations it needs.</summary>
     public Op Requires { get; }
 
+    /// <summary>Gets the pick policy the invariant is about (STABLE-PICK: retail; HYSTERESIS: current-first), or null.</summary>
+    public PickPolicy? RequiresPick { get; }
+
     /// <summary>Gets the kind of case it checks.</summary>
     public abstract Type CaseType { get; }
 
     /// <summary>Tests whether an implementation offers everything this invariant needs.</summary>
     /// <param name="impl">The implementation.</param>
     /// <returns>True when it can be tested.</returns>
-    public bool IsTestable(ICellPhysics impl) => (impl.Ops & Requires) == Requires;
+    public bool IsTestable(ICellPhysics impl) => WhyNotTestable(impl) is null;
+
+    /// <summary>Says why an implementation cannot be tested against this invariant, or null when it can.</summary>
+    /// <param name="impl">The implementation.</param>
+    /// <returns>The reason, or null.</returns>
+    public string? WhyNotTestable(ICellPhysics impl)
+    {
+        if ((impl.Ops & Requires) != Requires)
+        {
+            return "implementation lacks " + string.Join(", ", OpNames.Names(Requires & ~impl.Ops));
+        }
+
+        return RequiresPick is PickPolicy p && impl.Pick != p
+            ? $"applies to the {PickNames.Of(p)} pick; implementation declares {PickNames.Of(impl.Pick)}"
+            : null;
+    }
+
+    /// <summary>Runs this invariant as an FsCheck property over its case domain.</summary>
+    /// <param name="impl">The implementation.</param>
+    /// <param name="cases">Generated cases.</param>
+    /// <param name="seed">The seed.</param>
+    /// <param name="sink">Optional sink for FsCheck's text.</param>
+    /// <returns>The result.</returns>
+    public abstract InvariantResult Run(ICellPhysics impl, int cases, Seed seed, Action<string>? sink = null);
 
     /// <inheritdoc/>
     public override string ToString() => $"{Id}: {Statement}";
@@ -53,12 +84,25 @@ public sealed class Invariant<TCase> : Invariant
     /// <param name="statement">One sentence.</param>
     /// <param name="source">Spec section(s).</param>
     /// <param name="requires">Operations needed.</param>
+    /// <param name="domain">Where its cases come from.</param>
     /// <param name="check">The check.</param>
-    public Invariant(string id, string statement, string source, Op requires, Func<ICellPhysics, TCase, Outcome> check)
-        : base(id, statement, source, requires) => this.check = check;
+    /// <param name="requiresPick">The pick policy it is about, or null.</param>
+    public Invariant(string id, string statement, string source, Op requires, ICaseDomain<TCase> domain, Func<ICellPhysics, TCase, Outcome> check, PickPolicy? requiresPick = null)
+        : base(id, statement, source, requires, requiresPick)
+    {
+        this.check = check;
+        Domain = domain;
+    }
+
+    /// <summary>Gets the case domain.</summary>
+    public ICaseDomain<TCase> Domain { get; }
 
     /// <inheritdoc/>
     public override Type CaseType => typeof(TCase);
+
+    /// <inheritdoc/>
+    public override InvariantResult Run(ICellPhysics impl, int cases, Seed seed, Action<string>? sink = null) =>
+        CatalogueRunner.Run(this, impl, cases, seed, sink);
 
     /// <summary>
     /// Checks one case. An exception from the implementation is itself a violation (every operation must answer

@@ -1,5 +1,6 @@
 using AcPhys.Spec.Adapters;
 using AcPhys.Spec.Cases;
+using AcPhys.Spec.Corpus;
 
 namespace AcPhys.Spec.Invariants;
 
@@ -7,7 +8,7 @@ namespace AcPhys.Spec.Invariants;
 public static class InvariantCatalogue
 {
     /// <summary>Gets every invariant, in catalogue order.</summary>
-    public static IReadOnlyList<Invariant> All { get; } = [.. LandInvariants.All];
+    public static IReadOnlyList<Invariant> All { get; } = [.. LandInvariants.All, .. OutdoorInvariants.All, .. WalkInvariants.All];
 
     /// <summary>Gets the invariants over <see cref="LandCase"/>.</summary>
     public static IReadOnlyList<Invariant<LandCase>> Land => LandInvariants.All;
@@ -33,10 +34,48 @@ public static class InvariantCatalogue
             var outcome = invariant.Check(impl, c);
             if (outcome.IsViolation)
             {
-                return new Violation(invariant.Id, outcome.Message ?? "violated", c.ToString());
+                return new Violation(invariant.Id, outcome.Message ?? "violated", c.ToString()) { Case = c };
             }
         }
 
         return null;
     }
+
+    /// <summary>
+    /// Checks a walk: every testable walk invariant on the walk, then every testable outdoor invariant on the query
+    /// of each step (as the reference answers them, so the queries are the ones a correct client would ask).
+    /// </summary>
+    /// <param name="impl">The implementation under test.</param>
+    /// <param name="walk">The walk.</param>
+    /// <returns>The first violation, or null.</returns>
+    public static Violation? CheckWalk(ICellPhysics impl, Walk walk)
+    {
+        foreach (var invariant in WalkInvariants.All)
+        {
+            if (invariant.IsTestable(impl) && invariant.Check(impl, walk) is { IsViolation: true } o)
+            {
+                return new Violation(invariant.Id, o.Message ?? "violated", walk.ToString()) { Case = walk };
+            }
+        }
+
+        foreach (var step in WalkRunner.Run(ReferenceAdapter.Instance, walk))
+        {
+            foreach (var invariant in OutdoorInvariants.All)
+            {
+                if (invariant.IsTestable(impl) && invariant.Check(impl, step.Query) is { IsViolation: true } o)
+                {
+                    return new Violation(invariant.Id, $"step {step.Index}: {o.Message}", step.Query.ToString()) { Case = step.Query };
+                }
+            }
+        }
+
+        return null;
+    }
+
+    /// <summary>Checks a corpus entry of any kind.</summary>
+    /// <param name="impl">The implementation under test.</param>
+    /// <param name="entry">The entry.</param>
+    /// <returns>The first violation, or null.</returns>
+    public static Violation? CheckEntry(ICellPhysics impl, CorpusEntry entry) =>
+        entry.Walk is { } walk ? CheckWalk(impl, walk) : CheckLandCase(impl, entry.Case!.Value);
 }

@@ -16,6 +16,7 @@ public static class LandInvariants
         "lcoord_to_gid and gid_to_lcoord are inverse on the whole map: every on-map lcoord maps to its land cell and back, and every on-map land cell id maps to its lcoord and back.",
         "facts §1.2, §1.3, §2",
         Op.LcoordToGid | Op.GidToLcoord,
+        LandDomain.Instance,
         (impl, c) =>
         {
             bool applied = false;
@@ -60,6 +61,7 @@ public static class LandInvariants
         "blockid_to_lcoord(id) is (8·bx, 8·by) for every non-zero id on the map whatever its low word, and equals the block part of gid_to_lcoord(id) for land cells.",
         "facts §1.3, §2",
         Op.BlockIdToLcoord | Op.GidToLcoord,
+        LandDomain.Instance,
         (impl, c) =>
         {
             if (c.Cell.IsNone || !Oracle.BlockOnMap(c.Cell))
@@ -96,6 +98,7 @@ public static class LandInvariants
         "get_outside_lcoord(id, x, y) is the 24 m column containing the point, (8·bx + ⌊x/24⌋, 8·by + ⌊y/24⌋) with floor toward −∞, and fails exactly when the id is malformed, a coordinate is not finite, or the column is off the map.",
         "facts §2 get_outside_lcoord, §6.2",
         Op.GetOutsideLcoord,
+        LandDomain.Instance,
         (impl, c) =>
         {
             var expected = Oracle.Column(c.Cell, c.X, c.Y);
@@ -114,6 +117,7 @@ public static class LandInvariants
         "AdjustToOutside re-seats to the land cell whose 24 m column contains the point after the ±EPS snap, and fails (id 0) exactly when the low word is invalid or that column is off the map.",
         "facts §2.1, §6.3, §6.4",
         Op.AdjustToOutside,
+        LandDomain.Instance,
         (impl, c) =>
         {
             var r = impl.AdjustToOutside(c.Cell, c.X, c.Y);
@@ -145,6 +149,7 @@ public static class LandInvariants
         "Re-seating a re-seated point keeps its position (but for an EPS-band snap to 0) and its cell, unless the float32 re-base rounded the point exactly onto the cell's east or north line, where it moves once to the neighbour across that line; a third re-seat changes nothing.",
         "facts §2.1, §6.5 (tie band: docs/numerics.md)",
         Op.AdjustToOutside,
+        LandDomain.Instance,
         (impl, c) =>
         {
             var r1 = impl.AdjustToOutside(c.Cell, c.X, c.Y);
@@ -185,6 +190,7 @@ public static class LandInvariants
         "The world point is the same before and after a successful re-seat, within the EPS snap plus one float32 rounding (2.1e-4 m).",
         "facts §2.1 step 4",
         Op.AdjustToOutside,
+        LandDomain.Instance,
         (impl, c) =>
         {
             var r = impl.AdjustToOutside(c.Cell, c.X, c.Y);
@@ -207,6 +213,7 @@ public static class LandInvariants
         "A successful re-seat yields a land cell on the map and a re-based point with x, y in [0, 192) that lies in that cell's closed 24 m square (on its east or north line only where float32 rounding of the re-base put it there).",
         "facts §2.1 consequences, §5.5 (closed squares)",
         Op.AdjustToOutside,
+        LandDomain.Instance,
         (impl, c) =>
         {
             var r = impl.AdjustToOutside(c.Cell, c.X, c.Y);
@@ -238,6 +245,7 @@ public static class LandInvariants
         "Lcoords 0 and 2039 are valid on both axes while −1 and 2040 (and anything beyond) are not, and an id with block byte 0xFF is rejected by every LandDefs function, all without an exception.",
         "facts §1.3, §6.3",
         Op.LandDefs,
+        LandDomain.Instance,
         (impl, c) =>
         {
             bool applied = false;
@@ -300,6 +308,7 @@ public static class LandInvariants
         "A NaN or infinite coordinate never yields a cell: get_outside_lcoord and AdjustToOutside fail (id 0) without an exception, and in particular NaN never becomes lcoord 0.",
         "facts §2, §6.15; issue #2 (.NET 9 (int)NaN == 0)",
         Op.GetOutsideLcoord | Op.AdjustToOutside,
+        LandDomain.Instance,
         (impl, c) =>
         {
             if (float.IsFinite(c.X) && float.IsFinite(c.Y))

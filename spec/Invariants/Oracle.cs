@@ -80,4 +80,21 @@ public static class Oracle
     /// <param name="v">The coordinate.</param>
     /// <returns>The snapped coordinate.</returns>
     public static float Snap(float v) => Math.Abs((double)v) < 0.0002f ? 0f : v;
+
+    /// <summary>
+    /// Tests whether AdjustToOutside's re-base v − 192·⌊v/192⌋ is exact in float32. When it is not, the rounding can
+    /// land the point on (or across) a 24 m line: the float32 tie band of docs/numerics.md.
+    /// </summary>
+    /// <param name="v">A block-frame coordinate.</param>
+    /// <returns>True when the re-based value is representable exactly.</returns>
+    public static bool RebaseIsExact(float v)
+    {
+        if (!float.IsFinite(v))
+        {
+            return false;
+        }
+
+        double exact = Snap(v) - (192.0 * Math.Floor(Snap(v) / 192.0));
+        return (double)(float)exact == exact;
+    }
 }

@@ -3,12 +3,15 @@ namespace AcPhys.Spec.Invariants;
 /// <summary>A broken invariant on a concrete case.</summary>
 /// <param name="InvariantId">The invariant's stable ID.</param>
 /// <param name="Message">Observed against expected.</param>
-/// <param name="Case">The case, printed in its one-line replayable form.</param>
-public sealed record Violation(string InvariantId, string Message, string Case)
+/// <param name="CaseText">The case, printed in its one-line replayable form.</param>
+public sealed record Violation(string InvariantId, string Message, string CaseText)
 {
+    /// <summary>Gets the case object itself (a LandCase, OutdoorCase or Walk), when known, so it can be written to a file.</summary>
+    public object? Case { get; init; }
+
     /// <summary>Formats the violation on one line.</summary>
     /// <returns>The text.</returns>
-    public override string ToString() => $"{InvariantId}: {Message} [{Case}]";
+    public override string ToString() => $"{InvariantId}: {Message} [{CaseText}]";
 }
 
 /// <summary>Thrown by harnesses (the fuzzer) when an invariant is broken; carries the invariant ID.</summary>

@@ -1,7 +1,6 @@
 using System.Diagnostics;
 using AcPhys.Spec.Adapters;
 using AcPhys.Spec.Cases;
-using AcPhys.Spec.Generators;
 using AcPhys.Spec.Invariants;
 using FsCheck;
 using FsCheck.Fluent;
@@ -15,7 +14,7 @@ namespace AcPhys.Spec.Running;
 /// </summary>
 public static class CatalogueRunner
 {
-    /// <summary>Runs one LandDefs invariant.</summary>
+    /// <summary>Runs one invariant over its case domain.</summary>
     /// <param name="invariant">The invariant.</param>
     /// <param name="impl">The implementation under test.</param>
     /// <param name="cases">How many cases to generate.</param>
@@ -23,16 +22,16 @@ public static class CatalogueRunner
     /// <param name="sink">Optional sink for FsCheck's own text (the class distribution).</param>
     /// <returns>The result.</returns>
     /// <exception cref="AdapterFailureException">The implementation could not answer at all.</exception>
-    public static InvariantResult Run(Invariant<LandCase> invariant, ICellPhysics impl, int cases, Seed seed, Action<string>? sink = null)
+    /// <typeparam name="TCase">The case type.</typeparam>
+    public static InvariantResult Run<TCase>(Invariant<TCase> invariant, ICellPhysics impl, int cases, Seed seed, Action<string>? sink = null)
     {
-        if (!invariant.IsTestable(impl))
+        if (invariant.WhyNotTestable(impl) is string reason)
         {
-            var missing = OpNames.Names(invariant.Requires & ~impl.Ops);
             return new InvariantResult
             {
                 Invariant = invariant,
                 Status = ResultStatus.NotTested,
-                NotTestedReason = "implementation lacks " + string.Join(", ", missing),
+                NotTestedReason = reason,
                 Seed = seed,
             };
         }
@@ -43,7 +42,8 @@ public static class CatalogueRunner
         bool failing = false;
         AdapterFailureException? adapterFailure = null;
 
-        Property Body(LandCase c)
+        var domain = invariant.Domain;
+        Property Body(TCase c)
         {
             Outcome outcome;
             try
@@ -64,7 +64,7 @@ public static class CatalogueRunner
                     applicable++;
                 }
 
-                foreach (var tag in BoundaryClasses.Of(c))
+                foreach (var tag in domain.Classes(c))
                 {
                     classes[tag] = classes.GetValueOrDefault(tag) + 1;
                 }
@@ -73,7 +73,7 @@ public static class CatalogueRunner
             }
 
             return (!outcome.IsViolation).Label(outcome.Message ?? invariant.Id)
-                .Collect(BoundaryClasses.PrimaryCoordinate(c) + (outcome.Verdict == Verdict.Vacuous ? " (vacuous)" : string.Empty));
+                .Collect(domain.Primary(c) + (outcome.Verdict == Verdict.Vacuous ? " (vacuous)" : string.Empty));
         }
 
         var runner = new CapturingRunner(sink);
@@ -86,7 +86,7 @@ public static class CatalogueRunner
             ? config.WithReplay(seed.Value, seed.Gamma, size)
             : config.WithReplay(seed.Value, seed.Gamma);
 
-        Check.One(config, Prop.ForAll(LandGens.Arbitrary, (Func<LandCase, Property>)Body));
+        Check.One(config, Prop.ForAll(domain.Arbitrary, (Func<TCase, Property>)Body));
         stopwatch.Stop();
 
         if (adapterFailure is not null)
@@ -107,21 +107,28 @@ public static class CatalogueRunner
 
         if (runner.Result is TestResult.Failed failed)
         {
-            var original = failed.Item2.Head is LandCase o ? ViolationOf(invariant, impl, o) : null;
-            var shrunk = failed.Item3.Head is LandCase s ? ViolationOf(invariant, impl, s) : null;
+            var original = failed.Item2.Head is TCase o ? ViolationOf(invariant, impl, o) : null;
+            var shrunk = failed.Item3.Head is TCase s ? ViolationOf(invariant, impl, s) : null;
+            if (original is null && shrunk is null)
+            {
+                // The property itself threw (a tool defect, not an implementation finding): say so, never an empty violation.
+                string why = failed.Item4 is FsCheck.Outcome.Failed f ? f.Item.ToString() : "no violation on re-check (non-deterministic implementation?)";
+                throw new InvalidOperationException($"{invariant.Id}: the property failed without a reproducible violation on {failed.Item3.Head}: {why}");
+            }
+
             return result with
             {
                 Status = ResultStatus.Failed,
                 Violation = shrunk ?? original,
                 Original = original,
-                Replay = new Seed(failed.Item5.Seed, failed.Item5.Gamma, failed.Item7),
+                Replay = new Seed(failed.Item6.Seed, failed.Item6.Gamma, failed.Item7),
             };
         }
 
         return result;
     }
 
-    /// <summary>Runs every LandDefs invariant of the catalogue under a profile.</summary>
+    /// <summary>Runs every invariant of the catalogue under a profile.</summary>
     /// <param name="impl">The implementation under test.</param>
     /// <param name="profile">The budget.</param>
     /// <param name="only">Invariant IDs to run (all when null or empty).</param>
@@ -137,7 +144,7 @@ public static class CatalogueRunner
     {
         ulong runBase = profile.BaseSeed ?? Seed.Fresh().Value;
         var results = new List<InvariantResult>();
-        foreach (var invariant in InvariantCatalogue.Land)
+        foreach (var invariant in InvariantCatalogue.All)
         {
             if (only is { Count: > 0 } && !only.Contains(invariant.Id, StringComparer.OrdinalIgnoreCase))
             {
@@ -145,10 +152,10 @@ public static class CatalogueRunner
             }
 
             var seed = fixedSeed ?? Seed.Derive(runBase, invariant.Id);
-            var result = Run(invariant, impl, profile.CasesPerInvariant, seed);
-            if (profile.Exhaustive && result.Status == ResultStatus.Passed && fixedSeed is null)
+            var result = invariant.Run(impl, profile.CasesPerInvariant, seed);
+            if (profile.Exhaustive && result.Status == ResultStatus.Passed && fixedSeed is null && invariant is Invariant<LandCase> land)
             {
-                var sweep = Exhaustive.For(invariant, impl);
+                var sweep = Exhaustive.For(land, impl);
                 if (sweep is not null)
                 {
                     result = result with
@@ -169,9 +176,9 @@ public static class CatalogueRunner
         return results;
     }
 
-    private static Violation? ViolationOf(Invariant<LandCase> invariant, ICellPhysics impl, LandCase c)
+    private static Violation? ViolationOf<TCase>(Invariant<TCase> invariant, ICellPhysics impl, TCase c)
     {
         var outcome = invariant.Check(impl, c);
-        return outcome.IsViolation ? new Violation(invariant.Id, outcome.Message ?? "violated", c.ToString()) : null;
+        return outcome.IsViolation ? new Violation(invariant.Id, outcome.Message ?? "violated", c?.ToString() ?? string.Empty) { Case = c } : null;
     }
 }

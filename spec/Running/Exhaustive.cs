@@ -66,7 +66,7 @@ public static class Exhaustive
                 var outcome = invariant.Check(impl, c);
                 if (outcome.IsViolation)
                 {
-                    firstByRow[row] = new Violation(invariant.Id, outcome.Message ?? "violated", c.ToString());
+                    firstByRow[row] = new Violation(invariant.Id, outcome.Message ?? "violated", c.ToString()) { Case = c };
                     return;
                 }
             }

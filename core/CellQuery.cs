@@ -1,0 +1,36 @@
+using System.Numerics;
+
+namespace AcPhys.Core;
+
+/// <summary>
+/// The single entry point of a membership query: <c>find_cell_list</c> (facts §4). Today it covers open land
+/// (land-cell positions, no env cells or buildings); indoor seeding and transit come with scenes.
+/// </summary>
+public static class CellQuery
+{
+    /// <summary>
+    /// Resets the array, collects the land cells the spheres touch, and picks the containing cell.
+    /// Allocation-free once the array's capacity has grown.
+    /// </summary>
+    /// <param name="array">Reused output array: truncated first (retail, facts §6.13).</param>
+    /// <param name="position">A land cell id or block id (normalised by AdjustToOutside, facts §1.1).</param>
+    /// <param name="spheres">Sphere centres in <paramref name="position"/>'s block frame; sphere 0 decides the pick.</param>
+    /// <param name="current">The current cell, for <see cref="PickPolicy.CurrentFirst"/>; <see cref="CellId.None"/> when none.</param>
+    /// <param name="policy">The pick policy.</param>
+    /// <param name="landscape">Which blocks are loaded.</param>
+    /// <param name="fidelity">Retail or ACE.</param>
+    /// <returns>The containing cell, or <see cref="CellId.None"/>.</returns>
+    public static CellId FindCellListOutdoor(
+        CellArray array,
+        CellId position,
+        ReadOnlySpan<Sphere> spheres,
+        CellId current,
+        PickPolicy policy,
+        ILandscape landscape,
+        OutdoorFidelity fidelity = default)
+    {
+        array.Reset();
+        OutdoorCells.AddAllOutsideCells(array, position, Vector3.Zero, spheres, landscape, fidelity);
+        return spheres.IsEmpty ? CellId.None : ContainingCell.PickOutdoor(array, position, spheres[0].Center, policy, current);
+    }
+}

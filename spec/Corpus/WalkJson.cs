@@ -1,0 +1,115 @@
+using System.Numerics;
+using System.Text.Json;
+using AcPhys.Core.Text;
+using AcPhys.Spec.Cases;
+
+namespace AcPhys.Spec.Corpus;
+
+/// <summary>
+/// The <c>walk</c> object of a corpus file (docs/corpus-format.md):
+/// <c>{"start":{"cell","x","y","z"},"body":[{"x","y","z","r"}],"steps":[[dx,dy],…]}</c>, floats as round-trip text.
+/// </summary>
+public static class WalkJson
+{
+    /// <summary>Largest number of steps or spheres a file may hold (bounded input).</summary>
+    public const int MaxItems = 10_000;
+
+    /// <summary>Writes the walk as the property <c>walk</c>.</summary>
+    /// <param name="w">The writer, inside the entry object.</param>
+    /// <param name="walk">The walk.</param>
+    public static void Write(Utf8JsonWriter w, Walk walk)
+    {
+        w.WriteStartObject("walk");
+        w.WriteStartObject("start");
+        w.WriteString("cell", CellIdText.Format(walk.StartCell));
+        CorpusJson.WriteFloat(w, "x", walk.Start.X);
+        CorpusJson.WriteFloat(w, "y", walk.Start.Y);
+        CorpusJson.WriteFloat(w, "z", walk.Start.Z);
+        w.WriteEndObject();
+        w.WriteStartArray("body");
+        foreach (var b in walk.Body)
+        {
+            w.WriteStartObject();
+            CorpusJson.WriteFloat(w, "x", b.Offset.X);
+            CorpusJson.WriteFloat(w, "y", b.Offset.Y);
+            CorpusJson.WriteFloat(w, "z", b.Offset.Z);
+            CorpusJson.WriteFloat(w, "r", b.Radius);
+            w.WriteEndObject();
+        }
+
+        w.WriteEndArray();
+        w.WriteStartArray("steps");
+        foreach (var s in walk.Steps)
+        {
+            w.WriteStartArray();
+            w.WriteRawValue(FloatText.Format(s.X));
+            w.WriteRawValue(FloatText.Format(s.Y));
+            w.WriteEndArray();
+        }
+
+        w.WriteEndArray();
+        w.WriteEndObject();
+    }
+
+    /// <summary>Reads and validates a walk object.</summary>
+    /// <param name="e">The <c>walk</c> element.</param>
+    /// <param name="source">File name for messages.</param>
+    /// <returns>The walk.</returns>
+    /// <exception cref="CorpusFormatException">Any defect, with its JSON path.</exception>
+    public static Walk Read(JsonElement e, string source)
+    {
+        CorpusJson.Require(e.ValueKind == JsonValueKind.Object, source, "$.walk", "expected an object");
+        var start = CorpusJson.Prop(e, "start", source, "$.walk");
+        CorpusJson.Require(start.ValueKind == JsonValueKind.Object, source, "$.walk.start", "expected an object");
+        string cellText = CorpusJson.Str(start, "cell", source, "$.walk.start");
+        CorpusJson.Require(CellIdText.TryParse(cellText, out var cell), source, "$.walk.start.cell", $"expected \"0x\" and 8 hex digits, got \"{cellText}\"");
+        var position = new Vector3(
+            Finite(start, "x", source, "$.walk.start"),
+            Finite(start, "y", source, "$.walk.start"),
+            Finite(start, "z", source, "$.walk.start"));
+
+        var body = CorpusJson.Prop(e, "body", source, "$.walk");
+        CorpusJson.Require(body.ValueKind == JsonValueKind.Array && body.GetArrayLength() is > 0 and <= MaxItems, source, "$.walk.body", $"expected an array of 1 to {MaxItems} spheres");
+        var spheres = new List<BodySphere>();
+        int i = 0;
+        foreach (var b in body.EnumerateArray())
+        {
+            string at = $"$.walk.body[{i}]";
+            CorpusJson.Require(b.ValueKind == JsonValueKind.Object, source, at, "expected an object");
+            float r = Finite(b, "r", source, at);
+            CorpusJson.Require(r >= 0, source, at + ".r", "radius must be ≥ 0");
+            spheres.Add(new BodySphere(new Vector3(Finite(b, "x", source, at), Finite(b, "y", source, at), Finite(b, "z", source, at)), r));
+            i++;
+        }
+
+        var stepsElement = CorpusJson.Prop(e, "steps", source, "$.walk");
+        CorpusJson.Require(stepsElement.ValueKind == JsonValueKind.Array && stepsElement.GetArrayLength() <= MaxItems, source, "$.walk.steps", $"expected an array of at most {MaxItems} [dx, dy] pairs");
+        var steps = new List<Vector2>();
+        i = 0;
+        foreach (var s in stepsElement.EnumerateArray())
+        {
+            string at = $"$.walk.steps[{i}]";
+            CorpusJson.Require(s.ValueKind == JsonValueKind.Array && s.GetArrayLength() == 2, source, at, "expected [dx, dy]");
+            steps.Add(new Vector2(Component(s[0], source, at + "[0]"), Component(s[1], source, at + "[1]")));
+            i++;
+        }
+
+        return new Walk(cell, position, spheres, steps);
+    }
+
+    // Walk coordinates must be finite: a walk is a path a body can take (non-finite inputs are LandDefs cases).
+    private static float Finite(JsonElement parent, string name, string source, string at)
+    {
+        float v = CorpusJson.Float(parent, name, source, at);
+        CorpusJson.Require(float.IsFinite(v), source, at + "." + name, "walk coordinates must be finite");
+        return v;
+    }
+
+    private static float Component(JsonElement e, string source, string path)
+    {
+        CorpusJson.Require(e.ValueKind == JsonValueKind.Number, source, path, "expected a number");
+        float v = float.Parse(e.GetRawText(), System.Globalization.NumberStyles.Float, System.Globalization.CultureInfo.InvariantCulture);
+        CorpusJson.Require(float.IsFinite(v), source, path, "number overflows float32");
+        return v;
+    }
+}

@@ -1,0 +1,300 @@
+using AcPhys.Core;
+using AcPhys.Spec.Adapters;
+
+namespace AcPhys.Spec.Faults;
+
+/// <summary>
+/// A model of the cell math that reproduces one historical defect. It re-states the retail steps of facts §2–§4
+/// with the defect in place, so the reference core itself stays free of fault switches. With a defect that does
+/// not touch a step, the step behaves as the reference (a differential test checks the model against core).
+/// </summary>
+internal sealed class FaultyPhysics : ICellPhysics
+{
+    private readonly PlantedFault fault;
+    private readonly List<CellId> stale = [];
+    private int inherited;
+
+    public FaultyPhysics(PlantedFault fault) => this.fault = fault;
+
+    public string Name => "reference+" + fault.Id;
+
+    public Op Ops => Op.All;
+
+    // no-hysteresis declares the current-first policy but implements the retail rule.
+    public PickPolicy Pick => Is(PlantedFaults.NoHysteresis) ? PickPolicy.CurrentFirst : PickPolicy.Retail;
+
+    public bool BlockIdToLcoord(CellId id, out Lcoord lcoord)
+    {
+        lcoord = default;
+        if (id.IsNone)
+        {
+            return false;
+        }
+
+        int x = id.BlockX * 8, y = BlockY(id) * 8;
+        if (x >= LandDefs.LandLength || y >= LandDefs.LandLength)
+        {
+            return false;
+        }
+
+        lcoord = new Lcoord(x, y);
+        return true;
+    }
+
+    public bool InboundValidCellId(CellId id) =>
+        LandDefs.CellInRange(id.Low)
+        && id.BlockX * 8 < LandDefs.LandLength
+        && (Is(PlantedFaults.InboundXOnly) || BlockY(id) * 8 < LandDefs.LandLength);
+
+    public bool GidToLcoord(CellId id, out Lcoord lcoord)
+    {
+        lcoord = default;
+        if (!InboundValidCellId(id) || id.Low >= LandDefs.FirstEnvCellId)
+        {
+            return false;
+        }
+
+        int x = (id.BlockX * 8) + ((id.Low - 1) >> 3), y = (BlockY(id) * 8) + ((id.Low - 1) & 7);
+        if (!InBounds(x, y))
+        {
+            return false;
+        }
+
+        lcoord = new Lcoord(x, y);
+        return true;
+    }
+
+    public CellId LcoordToGid(int x, int y) =>
+        InBounds(x, y) ? new CellId((uint)(((x >> 3) << 24) | ((y >> 3) << 16) | (1 + ((x & 7) << 3) + (y & 7)))) : CellId.None;
+
+    public bool GetOutsideLcoord(CellId id, float x, float y, out Lcoord lcoord)
+    {
+        lcoord = default;
+        if (!LandDefs.CellInRange(id.Low) || !BlockIdToLcoord(id, out var block))
+        {
+            return false;
+        }
+
+        double cx = Is(PlantedFaults.TruncFloor) ? Math.Truncate(x / 24.0) : Math.Floor(x / 24.0);
+        double cy = Is(PlantedFaults.TruncFloor) ? Math.Truncate(y / 24.0) : Math.Floor(y / 24.0);
+        if (Is(PlantedFaults.NanAsZero))
+        {
+            int gx = (int)(block.X + cx), gy = (int)(block.Y + cy); // NaN → 0 on .NET 9+: the defect
+            if (!InBounds(gx, gy))
+            {
+                return false;
+            }
+
+            lcoord = new Lcoord(gx, gy);
+            return true;
+        }
+
+        double dx = block.X + cx, dy = block.Y + cy;
+        if (!(dx >= 0 && dy >= 0 && dx <= int.MaxValue && dy <= int.MaxValue) || !InBounds((int)dx, (int)dy))
+        {
+            return false;
+        }
+
+        lcoord = new Lcoord((int)dx, (int)dy);
+        return true;
+    }
+
+    public AdjustResult AdjustToOutside(CellId id, float x, float y)
+    {
+        if (!LandDefs.CellInRange(id.Low))
+        {
+            return new AdjustResult(false, CellId.None, x, y);
+        }
+
+        if (!Is(PlantedFaults.NoEpsSnap))
+        {
+            x = Math.Abs(x) < LandDefs.Epsilon ? 0f : x;
+            y = Math.Abs(y) < LandDefs.Epsilon ? 0f : y;
+        }
+
+        if (!GetOutsideLcoord(id, x, y, out var lc))
+        {
+            return new AdjustResult(false, CellId.None, x, y);
+        }
+
+        return new AdjustResult(true, LcoordToGid(lc.X, lc.Y), Rebase(x), Rebase(y));
+    }
+
+    private bool Is(PlantedFault f) => ReferenceEquals(fault, f);
+
+    private int BlockY(CellId id) => Is(PlantedFaults.SignExtendBlockY) ? (sbyte)id.BlockY : id.BlockY;
+
+    private bool InBounds(int x, int y) => Is(PlantedFaults.MapEdge2040)
+        ? x >= 0 && y >= 0 && x <= LandDefs.LandLength && y <= LandDefs.LandLength
+        : LandDefs.InBounds(x, y);
+
+    private float Rebase(float v) => Is(PlantedFaults.DropBlockLength)
+        ? (float)(v - Math.Floor(v / 192.0))
+        : (float)(v - (192.0 * Math.Floor(v / 192.0)));
+
+    public IReadOnlyList<CellId> OutsideCells(CellId cell, IReadOnlyList<Sphere> spheres)
+    {
+        var cells = NewArray();
+        AddAllOutsideCells(cells, cell, spheres);
+        return cells;
+    }
+
+    public FindCellResult FindCell(CellId cell, IReadOnlyList<Sphere> spheres, CellId current)
+    {
+        var cells = NewArray();
+        AddAllOutsideCells(cells, cell, spheres);
+        var containing = CellId.None;
+        if (spheres.Count > 0 && Is(PlantedFaults.StickyPick) && current.IsLand && cells.Contains(current)
+            && ContainingCell.LandSquareContains(current, spheres[0].Center - LandDefs.GetBlockOffset(cell, current)))
+        {
+            return new FindCellResult(cells, current); // sticky-pick: current-first behaviour behind a retail declaration
+        }
+
+        if (spheres.Count > 0)
+        {
+            foreach (var id in cells)
+            {
+                if (Is(PlantedFaults.Clamp106) && (id.Value >> 16) != (cell.Value >> 16))
+                {
+                    continue; // #106: the pick, too, only looked at the current block's 8 × 8 grid
+                }
+
+                if (id.IsLand && ContainingCell.LandSquareContains(id, spheres[0].Center - LandDefs.GetBlockOffset(cell, id)))
+                {
+                    containing = id;
+                }
+            }
+        }
+
+        return new FindCellResult(cells, containing);
+    }
+
+    // no-reset: the array keeps the previous query's cells (ACE's find_cell_list, facts §7 #6). Only the previous
+    // query's own cells are carried, as within one short ACE transition, so the model stays bounded.
+    private List<CellId> NewArray()
+    {
+        inherited = Is(PlantedFaults.NoReset) ? stale.Count : 0;
+        return Is(PlantedFaults.NoReset) ? [.. stale] : [];
+    }
+
+    private void AddAllOutsideCells(List<CellId> cells, CellId position, IReadOnlyList<Sphere> spheres)
+    {
+        if (Is(PlantedFaults.SphereGuardInverted) ? spheres.Count != 0 : spheres.Count == 0)
+        {
+            var only = AdjustToOutside(position, 0f, 0f);
+            if (only.Ok && GidToLcoord(only.Cell, out var lc))
+            {
+                AddOutsideCell(cells, position, lc.X, lc.Y);
+            }
+
+            Remember(cells);
+            return;
+        }
+
+        var carried = position;
+        foreach (var sphere in spheres)
+        {
+            var start = Is(PlantedFaults.SphereLeak) ? carried : position;
+            var r = AdjustToOutside(start, sphere.Center.X, sphere.Center.Y);
+            if (!r.Ok)
+            {
+                break;
+            }
+
+            carried = r.Cell;
+            float ptX = (float)(r.X - (24.0 * Math.Floor(r.X / 24.0)));
+            float ptY = (float)(r.Y - (24.0 * Math.Floor(r.Y / 24.0)));
+            GidToLcoord(r.Cell, out var lc);
+            AddOutsideCell(cells, position, lc.X, lc.Y);
+            CheckAddCellBoundary(cells, position, r.Cell, ptX, ptY, lc, sphere.Radius, 24f - sphere.Radius);
+        }
+
+        Remember(cells);
+    }
+
+    private void Remember(List<CellId> cells)
+    {
+        if (Is(PlantedFaults.NoReset))
+        {
+            var fresh = cells.Skip(inherited).ToList();
+            stale.Clear();
+            stale.AddRange(fresh);
+        }
+    }
+
+    private void CheckAddCellBoundary(List<CellId> cells, CellId position, CellId cell, float ptX, float ptY, Lcoord lc, float minRad, float maxRad)
+    {
+        void Add(int dx, int dy)
+        {
+            if (Is(PlantedFaults.InCellNeighbours))
+            {
+                // Early ACE: neighbours from the in-block cell index, so nothing across a block line.
+                int cx = ((cell.Low - 1) >> 3) + dx, cy = ((cell.Low - 1) & 7) + dy;
+                if (cx is < 0 or > 7 || cy is < 0 or > 7)
+                {
+                    return;
+                }
+            }
+
+            AddOutsideCell(cells, position, lc.X + dx, lc.Y + dy);
+        }
+
+        if (ptX > maxRad)
+        {
+            Add(1, 0);
+            if (ptY > maxRad)
+            {
+                Add(1, 1);
+            }
+
+            if (ptY < minRad)
+            {
+                Add(1, -1);
+            }
+        }
+
+        // else-diagonal: an early ACE revision made this an else branch, so with r > 12 only one side is added.
+        if (ptX < minRad && !(Is(PlantedFaults.ElseDiagonal) && ptX > maxRad))
+        {
+            Add(-1, 0);
+            if (ptY > maxRad)
+            {
+                Add(-1, 1);
+            }
+
+            if (ptY < minRad)
+            {
+                Add(-1, -1);
+            }
+        }
+
+        if (ptY > maxRad)
+        {
+            Add(0, 1);
+        }
+
+        if (ptY < minRad)
+        {
+            Add(0, -1);
+        }
+    }
+
+    private void AddOutsideCell(List<CellId> cells, CellId position, int x, int y)
+    {
+        if (!InBounds(x, y))
+        {
+            return;
+        }
+
+        var id = LcoordToGid(x, y);
+        if (Is(PlantedFaults.Clamp106) && (id.Value >> 16) != (position.Value >> 16))
+        {
+            return; // #106: candidates clamped to the current landblock
+        }
+
+        if (!cells.Contains(id))
+        {
+            cells.Add(id);
+        }
+    }
+}
