@@ -18,6 +18,7 @@ internal static class Program
             InvariantsCommand.Create(),
             FaultsCommand.Create(),
             ReplayCommand.Create(),
+            RenderCommand.Create(),
         };
 
         var parse = root.Parse(args);

@@ -10,7 +10,7 @@ using Spectre.Console;
 namespace AcPhys.Cli.Commands;
 
 /// <summary>
-/// The <c>verify</c> verb: runs the LandDefs invariants against the bundled reference core (or the reference with a
+/// The <c>verify</c> verb: runs every invariant of the catalogue against the bundled reference core (or the reference with a
 /// planted fault) and reports each with its cases, boundary coverage, verdict and, on failure, a replay line.
 /// </summary>
 internal static class VerifyCommand
@@ -47,9 +47,14 @@ internal static class VerifyCommand
         var quiet = new Option<bool>("--quiet", "-q") { Description = "Print only failures and the summary line (for CI logs)." };
         var classes = new Option<bool>("--classes") { Description = "Also print how often each boundary class was hit." };
 
+        var pick = new Option<string>("--pick")
+        {
+            Description = "The pick policy of the bundled reference: retail (default) or current-first (acdream's hysteresis).",
+            HelpName = "POLICY",
+        };
         var command = new Command("verify", "Run the invariant catalogue against the reference core (or a planted fault) and report.")
         {
-            profile, only, seed, baseSeed, fault, quiet, classes,
+            profile, only, seed, baseSeed, fault, quiet, classes, pick,
         };
         command.SetAction(parse => Guard.Run("verify", () =>
         {
@@ -59,6 +64,9 @@ internal static class VerifyCommand
             {
                 Quiet = parse.GetValue(quiet),
                 ShowClasses = parse.GetValue(classes),
+                Pick = PickNames.TryParse(parse.GetValue(pick), out var policy)
+                    ? policy
+                    : throw new UsageException($"unknown pick policy '{parse.GetValue(pick)}' (known: retail, current-first)"),
             };
             return Run(settings);
         }));
@@ -70,7 +78,8 @@ internal static class VerifyCommand
 
     private static int Run(VerifySettings settings)
     {
-        ICellPhysics impl = settings.Fault is null ? ReferenceAdapter.Instance : PlantedFaults.Create(settings.Fault.Id);
+        ICellPhysics impl = settings.Fault is not null ? PlantedFaults.Create(settings.Fault.Id)
+            : settings.Pick == AcPhys.Core.PickPolicy.CurrentFirst ? ReferenceAdapter.CurrentFirst : ReferenceAdapter.Instance;
         var report = new VerifyReport(settings, impl);
         if (!settings.Quiet)
         {
@@ -105,7 +114,7 @@ internal static class VerifyCommand
             return CatalogueRunner.RunCatalogue(impl, settings.Profile, only, settings.FixedSeed);
         }
 
-        int total = only?.Count ?? InvariantCatalogue.Land.Count;
+        int total = only?.Count ?? InvariantCatalogue.All.Count;
         int done = 0;
         IReadOnlyList<InvariantResult> results = [];
         Terminal.Err.Status().Start($"checking {total} invariants against {impl.Name} ...", context =>

@@ -34,10 +34,11 @@ internal sealed class LandCaseReplay : IReplayInput
         }
 
         Terminal.Line();
-        var checks = InvariantCatalogue.Land.Select(i => (Invariant: i, Outcome: CheckOrSkip(i, target.Impl, entry.Case))).ToArray();
+        var landCase = entry.Case!.Value;
+        var checks = InvariantCatalogue.Land.Select(i => (Invariant: i, Outcome: CheckOrSkip(i, target.Impl, landCase))).ToArray();
         WriteInvariants(checks, entry, target);
 
-        var catches = entry.Catches.Select(id => Catch(id, entry.Case)).ToArray();
+        var catches = entry.Catches.Select(id => Catch(id, landCase)).ToArray();
         if (catches.Length > 0)
         {
             Terminal.Line();

@@ -29,6 +29,13 @@ internal static class BoundaryCoverage
     /// <returns>E.g. <c>23: rarest subnormal 41, eps-edge 57</c> or <c>20, missed cell:env, coord:huge</c>.</returns>
     public static string Brief(IReadOnlyDictionary<string, int> classes)
     {
+        if (!classes.Keys.Any(AllTags.Contains))
+        {
+            // Outdoor queries and walks carry their own classes (PlaceClasses): report what was hit, rarest first.
+            var rare = classes.OrderBy(k => k.Value).Take(3).Select(k => $"{k.Key} {Fmt.Count(k.Value)}");
+            return $"{classes.Count} classes; rarest {string.Join(", ", rare)}";
+        }
+
         var missed = Missed(classes);
         if (missed.Count > 0)
         {

@@ -1,6 +1,4 @@
 using AcPhys.Spec.Adapters;
-using AcPhys.Spec.Cases;
-using AcPhys.Spec.Invariants;
 using AcPhys.Spec.Running;
 
 namespace AcPhys.Cli.Verify;
@@ -47,13 +45,13 @@ internal static class ReplayLine
 
     private static bool Reproduces(InvariantResult result, ICellPhysics impl, Seed seed, int cases)
     {
-        if (result.Invariant is not Invariant<LandCase> invariant || result.Violation is null)
+        if (result.Violation is null)
         {
             return false;
         }
 
-        var again = CatalogueRunner.Run(invariant, impl, cases, seed);
-        return again.Status == ResultStatus.Failed && again.Violation?.Case == result.Violation.Case;
+        var again = result.Invariant.Run(impl, cases, seed);
+        return again.Status == ResultStatus.Failed && again.Violation?.CaseText == result.Violation.CaseText;
     }
 
     private static string Build(InvariantResult result, VerifySettings settings, Seed? seed, string profile)

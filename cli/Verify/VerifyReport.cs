@@ -1,4 +1,5 @@
 using AcPhys.Spec.Adapters;
+using AcPhys.Spec.Corpus;
 using AcPhys.Spec.Invariants;
 using AcPhys.Spec.Running;
 using Spectre.Console;
@@ -23,7 +24,7 @@ internal sealed class VerifyReport(VerifySettings settings, ICellPhysics impl)
     /// <summary>Writes what is about to run: implementation, profile, seeds.</summary>
     public void WriteHeader()
     {
-        int count = settings.Only.Count == 0 ? InvariantCatalogue.Land.Count : settings.Only.Count;
+        int count = settings.Only.Count == 0 ? InvariantCatalogue.All.Count : settings.Only.Count;
         string budget = settings.FixedSeed is Seed s
             ? $"profile {settings.Profile.Name}, seed {s} for every invariant (no exhaustive sweeps)"
             : $"profile {settings.Profile.Name}: {Fmt.Count(settings.Profile.CasesPerInvariant)} generated cases per invariant"
@@ -52,7 +53,7 @@ internal sealed class VerifyReport(VerifySettings settings, ICellPhysics impl)
             .AddColumn("Invariant")
             .AddColumn(new TableColumn("Cases (generated + exhaustive)").RightAligned())
             .AddColumn(new TableColumn("Applicable").RightAligned())
-            .AddColumn(new TableColumn($"Boundary classes hit (of {BoundaryCoverage.AllTags.Count})"))
+            .AddColumn(new TableColumn($"Boundary classes hit (LandDefs: of {BoundaryCoverage.AllTags.Count})"))
             .AddColumn("Verdict")
             .AddColumn(new TableColumn("Time").RightAligned());
         foreach (var r in results)
@@ -125,7 +126,7 @@ internal sealed class VerifyReport(VerifySettings settings, ICellPhysics impl)
             bool swept = r.Replay is null && r.ExhaustiveCases > 0;
             if (r.Violation is { } v)
             {
-                Field(swept ? "case" : "shrunk", v.Case);
+                Field(swept ? "case" : "shrunk", v.CaseText);
                 Field("message", v.Message);
             }
 
@@ -135,7 +136,7 @@ internal sealed class VerifyReport(VerifySettings settings, ICellPhysics impl)
             }
             else if (r.Original is { } o && o != r.Violation)
             {
-                Field("original", o.Case);
+                Field("original", o.CaseText);
                 if (o.Message != r.Violation?.Message)
                 {
                     Field(string.Empty, o.Message);
@@ -145,6 +146,11 @@ internal sealed class VerifyReport(VerifySettings settings, ICellPhysics impl)
             var (line, confirmed) = ReplayLine.For(r, settings, impl);
             Field("seed", r.Seed.ToString());
             Field("replay", line);
+            if (r.Violation is { } shrunk && FailureFile.Write(shrunk, FailureFolder, "props", r.Seed.ToString()) is string file)
+            {
+                Field("case file", file);
+                Field("replay", ReplayLine.Quote(ReplayLine.Program) + " replay " + ReplayLine.Quote(file) + (settings.Fault is null ? string.Empty : " --fault " + settings.Fault.Id));
+            }
             if (!confirmed)
             {
                 Field(string.Empty, "(note: re-running this line did not reproduce the same shrunk case)");
@@ -190,6 +196,9 @@ internal sealed class VerifyReport(VerifySettings settings, ICellPhysics impl)
         ResultStatus.Failed => "[red bold]FAIL[/]",
         _ => "[yellow]NOT TESTED[/]",
     };
+
+    /// <summary>Gets the folder shrunk failing cases are written to: <c>ACPHYS_FAILURES</c>, else artifacts/failures.</summary>
+    public static string FailureFolder => Environment.GetEnvironmentVariable("ACPHYS_FAILURES") is { Length: > 0 } f ? f : Path.Combine("artifacts", "failures");
 
     private static void Field(string name, string value) => Terminal.Line($"  {name,-10} {value}");
 

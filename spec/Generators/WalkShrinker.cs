@@ -12,7 +12,7 @@ public static class WalkShrinker
     /// <summary>Returns simpler candidates, most aggressive first; every candidate starts inside its block, as generated walks do.</summary>
     /// <param name="w">The failing walk.</param>
     /// <returns>Candidates.</returns>
-    public static IEnumerable<Walk> Shrink(Walk w) => Candidates(w).Where(c => c.StartsInBlock);
+    public static IEnumerable<Walk> Shrink(Walk w) => Candidates(w).Where(c => c.StartsInBlock).Select(c => c.Normalised()).Where(c => c != w);
 
     private static IEnumerable<Walk> Candidates(Walk w)
     {

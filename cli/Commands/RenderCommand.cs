@@ -1,0 +1,50 @@
+using System.CommandLine;
+using AcPhys.Cli.Render;
+using AcPhys.Cli.Replay;
+using AcPhys.Spec.Adapters;
+using AcPhys.Spec.Corpus;
+using AcPhys.Spec.Faults;
+
+namespace AcPhys.Cli.Commands;
+
+/// <summary>The <c>render</c> verb: draws a walk file as SVG (grid, block lines and ids, path, spheres, containing cells, the violating step).</summary>
+internal static class RenderCommand
+{
+    /// <summary>Builds the command.</summary>
+    /// <returns>The command.</returns>
+    public static Command Create()
+    {
+        var file = new Argument<string>("file") { Description = "A walk file (kind \"walk\")." };
+        var output = new Option<string>("--output", "-o") { Description = "The SVG file to write (atomically).", HelpName = "FILE", Required = true };
+        var fault = new Option<string>("--fault") { Description = "Run the walk against the reference with this planted fault.", HelpName = "FAULT" };
+        var command = new Command("render", "Draw a walk as SVG, with the first violating step highlighted.") { file, output, fault };
+        command.SetAction(parse => Guard.Run("render", () => Run(parse.GetValue(file) ?? string.Empty, parse.GetValue(output)!, parse.GetValue(fault))));
+        return command;
+    }
+
+    private static int Run(string path, string output, string? faultId)
+    {
+        if (!File.Exists(path))
+        {
+            throw new UsageException($"{(path.Length == 0 ? "''" : path)}: no such file");
+        }
+
+        var entry = CorpusJson.ReadFile(path);
+        if (entry.Walk is null)
+        {
+            throw new UsageException($"{path}: $.kind: render draws walks; this file is kind \"{entry.Kind}\"");
+        }
+
+        ICellPhysics impl = ReferenceAdapter.Instance;
+        if (faultId is not null)
+        {
+            var fault = PlantedFaults.Find(faultId) ?? throw new UsageException($"unknown fault '{faultId}' (known: {string.Join(", ", PlantedFaults.All.Select(f => f.Id))})");
+            impl = PlantedFaults.Create(fault.Id);
+        }
+
+        var check = WalkReplay.Check(impl, entry.Walk);
+        AtomicFile.WriteAllText(output, WalkSvg.Render(entry.Walk, check, $"{entry.Title} — {impl.Name}"));
+        Terminal.Line($"render: wrote {output} ({check.Trace.Count - 1} steps, {(check.FirstViolatingStep is int s ? $"first violation at step {s}" : "no violation")})");
+        return ExitCodes.Ok;
+    }
+}

@@ -1,0 +1,126 @@
+using System.Globalization;
+using System.Text;
+using AcPhys.Cli.Replay;
+using AcPhys.Core;
+using AcPhys.Spec.Cases;
+using AcPhys.Spec.Invariants;
+
+namespace AcPhys.Cli.Render;
+
+/// <summary>
+/// Draws a checked walk as SVG: the 24 m cell grid, landblock lines with their ids, the path of sphere 0, the spheres
+/// at each step, the containing cell at each step, and the first violating step in red. World metres, north up.
+/// </summary>
+internal static class WalkSvg
+{
+    private const double Scale = 8; // pixels per metre at most; shrunk for large walks
+    private const double MaxPixels = 1400;
+    private const double MinPixels = 720;
+    private const double Header = 52;
+    private const double LegendLine = 14;
+
+    /// <summary>Renders the SVG document.</summary>
+    /// <param name="walk">The walk.</param>
+    /// <param name="check">Its trace and violations.</param>
+    /// <param name="title">A caption.</param>
+    /// <returns>The SVG text.</returns>
+    public static string Render(Walk walk, WalkCheck check, string title)
+    {
+        var o = walk.Body.Count > 0 ? walk.Body[0].Offset : default;
+        var points = check.Trace.Select(s => (X: s.WorldX + o.X, Y: s.WorldY + o.Y)).ToList();
+        double reach = walk.Body.Select(b => Math.Max(Math.Abs(b.Offset.X), Math.Abs(b.Offset.Y)) + b.Radius).DefaultIfEmpty(0).Max();
+        double minX = Math.Floor((points.Min(p => p.X) - reach - 36) / 24) * 24, maxX = Math.Ceiling((points.Max(p => p.X) + reach + 36) / 24) * 24;
+        double minY = Math.Floor((points.Min(p => p.Y) - reach - 36) / 24) * 24, maxY = Math.Ceiling((points.Max(p => p.Y) + reach + 36) / 24) * 24;
+        double scale = Math.Clamp(MinPixels / (maxX - minX), 1e-3, Math.Min(Scale, MaxPixels / Math.Max(maxX - minX, maxY - minY)));
+        double width = Math.Max((maxX - minX) * scale, MinPixels), height = (maxY - minY) * scale;
+        int legendRows = Math.Min(check.Trace.Count, 16) + 1;
+        double legend = (legendRows * LegendLine) + 10;
+        double Px(double x) => (x - minX) * scale;
+        double Py(double y) => (maxY - y) * scale;
+        string F(double v) => v.ToString("0.###", CultureInfo.InvariantCulture);
+
+        var sb = new StringBuilder();
+        sb.Append($"<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{F(width)}\" height=\"{F(Header + height + legend)}\" viewBox=\"0 {F(-Header)} {F(width)} {F(Header + height + legend)}\" font-family=\"monospace\" font-size=\"11\">\n");
+        sb.Append($"<title>{Escape(title)}</title>\n<rect x=\"0\" y=\"{F(-Header)}\" width=\"{F(width)}\" height=\"{F(Header + height + legend)}\" fill=\"white\"/>\n");
+        int? bad = check.FirstViolatingStep;
+        string headline = $"{check.Trace.Count - 1} steps; " + (bad is int b ? $"first violation at step {b}: {string.Join(", ", check.PerStep[b].Select(v => v.InvariantId).Distinct())}" : "no violation");
+        sb.Append($"<text x=\"4\" y=\"{F(-Header + 16)}\" font-weight=\"bold\">{Escape(Clip(title, (int)(width / 7)))}</text>\n");
+        sb.Append($"<text x=\"4\" y=\"{F(-Header + 32)}\">{Escape(Clip(headline, (int)(width / 7)))}</text>\n");
+        sb.Append($"<text x=\"4\" y=\"{F(-Header + 46)}\" fill=\"#555\">green: containing cell per step; red outline: the violating step's containing cell; dashed: the cell under its centre</text>\n");
+
+        // Containing cell of every step (drawn first, under the grid); the violating step's expected cell in red.
+        foreach (var step in check.Trace)
+        {
+            if (!step.Containing.IsNone && step.Containing.IsLand)
+            {
+                var (gx, gy) = Oracle.LcoordOf(step.Containing);
+                bool isBad = step.Index == bad;
+                sb.Append($"<rect x=\"{F(Px(24.0 * gx))}\" y=\"{F(Py(24.0 * (gy + 1)))}\" width=\"{F(24 * scale)}\" height=\"{F(24 * scale)}\" fill=\"#bfe0bf\" fill-opacity=\"0.45\" stroke=\"{(isBad ? "red" : "none")}\" stroke-width=\"3\"/>\n");
+            }
+        }
+
+        if (bad is int at)
+        {
+            var p = points[at];
+            double gx = Math.Floor(p.X / 24), gy = Math.Floor(p.Y / 24);
+            sb.Append($"<rect x=\"{F(Px(24.0 * gx))}\" y=\"{F(Py(24.0 * (gy + 1)))}\" width=\"{F(24 * scale)}\" height=\"{F(24 * scale)}\" fill=\"none\" stroke=\"red\" stroke-width=\"3\" stroke-dasharray=\"6 3\"/>\n");
+        }
+
+        for (double x = minX; x <= maxX; x += 24)
+        {
+            bool block = x % 192 == 0;
+            sb.Append($"<line x1=\"{F(Px(x))}\" y1=\"0\" x2=\"{F(Px(x))}\" y2=\"{F(height)}\" stroke=\"{(block ? "#222" : "#ccc")}\" stroke-width=\"{(block ? 2 : 1)}\"/>\n");
+        }
+
+        for (double y = minY; y <= maxY; y += 24)
+        {
+            bool block = y % 192 == 0;
+            sb.Append($"<line x1=\"0\" y1=\"{F(Py(y))}\" x2=\"{F(width)}\" y2=\"{F(Py(y))}\" stroke=\"{(block ? "#222" : "#ccc")}\" stroke-width=\"{(block ? 2 : 1)}\"/>\n");
+        }
+
+        // Landblock ids at the south-west corner of every block in view.
+        for (double bx = Math.Floor(minX / 192) * 192; bx < maxX; bx += 192)
+        {
+            for (double by = Math.Floor(minY / 192) * 192; by < maxY; by += 192)
+            {
+                if (bx >= 0 && by >= 0 && bx / 192 <= LandDefs.MaxBlockByte && by / 192 <= LandDefs.MaxBlockByte)
+                {
+                    var id = new LandblockId((byte)(bx / 192), (byte)(by / 192));
+                    sb.Append($"<text x=\"{F(Math.Max(Px(bx), 0) + 3)}\" y=\"{F(Math.Min(Py(by), height) - 4)}\" fill=\"#555\">block {id}</text>\n");
+                }
+            }
+        }
+
+        sb.Append("<polyline fill=\"none\" stroke=\"#1f5fbf\" stroke-width=\"2\" points=\"")
+          .Append(string.Join(' ', points.Select(p => $"{F(Px(p.X))},{F(Py(p.Y))}"))).Append("\"/>\n");
+        foreach (var step in check.Trace)
+        {
+            bool isBad = step.Index == bad;
+            foreach (var sphere in walk.Body)
+            {
+                double x = step.WorldX + sphere.Offset.X, y = step.WorldY + sphere.Offset.Y;
+                sb.Append($"<circle cx=\"{F(Px(x))}\" cy=\"{F(Py(y))}\" r=\"{F(Math.Max(sphere.Radius * scale, 2))}\" fill=\"{(isBad ? "red" : "#1f5fbf")}\" fill-opacity=\"0.18\" stroke=\"{(isBad ? "red" : "#1f5fbf")}\"/>\n");
+            }
+
+            var p = points[step.Index];
+            sb.Append($"<text x=\"{F(Px(p.X) + 5)}\" y=\"{F(Py(p.Y) + 14 + (12 * (step.Index % 3)))}\" fill=\"{(isBad ? "red" : "#000")}\">{step.Index}</text>\n");
+        }
+
+        // Legend: one line per step (the first 16).
+        double ly = height + LegendLine + 4;
+        sb.Append($"<text x=\"4\" y=\"{F(ly)}\" font-weight=\"bold\" xml:space=\"preserve\">step  frame       containing  current     violations</text>\n");
+        foreach (var step in check.Trace.Take(16))
+        {
+            ly += LegendLine;
+            string line = $"{step.Index,4}  {step.Frame,-10}  {step.Containing,-10}  {step.Current,-10}  {string.Join(", ", check.PerStep[step.Index].Select(v => v.InvariantId).Distinct())}";
+            sb.Append($"<text x=\"4\" y=\"{F(ly)}\" xml:space=\"preserve\" fill=\"{(step.Index == bad ? "red" : "#000")}\">{Escape(line)}</text>\n");
+        }
+
+        sb.Append("</svg>\n");
+        return sb.ToString();
+    }
+
+    private static string Clip(string s, int max) => s.Length <= max ? s : s[..Math.Max(max - 1, 1)] + "…";
+
+    private static string Escape(string s) => s.Replace("&", "&amp;", StringComparison.Ordinal).Replace("<", "&lt;", StringComparison.Ordinal).Replace(">", "&gt;", StringComparison.Ordinal);
+}
