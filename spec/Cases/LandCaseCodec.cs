@@ -71,19 +71,7 @@ public static class LandCaseCodec
             case 1:
                 {
                     int line = BinaryPrimitives.ReadInt16LittleEndian(field);
-                    int ulps = Math.Clamp((int)(sbyte)field[2], -8, 8);
-                    float v = line * LandDefs.CellLength;
-                    for (; ulps > 0; ulps--)
-                    {
-                        v = MathF.BitIncrement(v);
-                    }
-
-                    for (; ulps < 0; ulps++)
-                    {
-                        v = MathF.BitDecrement(v);
-                    }
-
-                    return v;
+                    return Ulps.Step(line * LandDefs.CellLength, Math.Clamp((int)(sbyte)field[2], -8, 8));
                 }
 
             case 2:

@@ -16,7 +16,7 @@ public static class CorpusJson
     /// <summary>The value of the <c>format</c> field.</summary>
     public const string FormatName = "acphys-case";
 
-    private static readonly JsonWriterOptions WriterOptions = new() { Indented = true };
+    private static readonly JsonWriterOptions WriterOptions = new() { Indented = true, Encoder = System.Text.Encodings.Web.JavaScriptEncoder.UnsafeRelaxedJsonEscaping };
 
     /// <summary>Serialises an entry.</summary>
     /// <param name="entry">The entry.</param>
@@ -117,17 +117,10 @@ public static class CorpusJson
                 }
             }
 
+            var header = new CorpusEntry { Title = title, Invariant = invariant, FoundBy = foundBy, Seed = seed, Catches = catches };
             if (kind == "walk")
             {
-                return new CorpusEntry
-                {
-                    Title = title,
-                    Invariant = invariant,
-                    FoundBy = foundBy,
-                    Seed = seed,
-                    Catches = catches,
-                    Walk = WalkJson.Read(Prop(root, "walk", source), source),
-                };
+                return header with { Walk = WalkJson.Read(Prop(root, "walk", source), source) };
             }
 
             var caseElement = Prop(root, "case", source);
@@ -143,15 +136,7 @@ public static class CorpusJson
             lx = lc[0].GetInt32();
             ly = lc[1].GetInt32();
 
-            return new CorpusEntry
-            {
-                Title = title,
-                Invariant = invariant,
-                FoundBy = foundBy,
-                Seed = seed,
-                Catches = catches,
-                Case = new LandCase(cell, x, y, new Lcoord(lx, ly)),
-            };
+            return header with { Case = new LandCase(cell, x, y, new Lcoord(lx, ly)) };
         }
     }
 

@@ -17,9 +17,9 @@ public static class LandGens
         (10, Gen.Choose(0, 191_999_999).Select(i => i / 1e6f)),
         (8, Gen.Choose(-16, 16).Select(k => k * 24f)),
         (5, Gen.Choose(-8, 8).Select(k => k * 192f)),
-        (10, Gen.Zip(Gen.Choose(-16, 16), Gen.Elements(-4, -3, -2, -1, 1, 2, 3, 4)).Select(t => StepUlps(t.Item1 * 24f, t.Item2))),
+        (10, Gen.Zip(Gen.Choose(-16, 16), Gen.Elements(-4, -3, -2, -1, 1, 2, 3, 4)).Select(t => Ulps.Step(t.Item1 * 24f, t.Item2))),
         (8, Gen.Choose(-199_999, 199_999).Select(i => i * 1e-9f)),
-        (4, Gen.Zip(Gen.Elements(LandDefs.Epsilon, -LandDefs.Epsilon), Gen.Choose(-4, 4)).Select(t => StepUlps(t.Item1, t.Item2))),
+        (4, Gen.Zip(Gen.Elements(LandDefs.Epsilon, -LandDefs.Epsilon), Gen.Choose(-4, 4)).Select(t => Ulps.Step(t.Item1, t.Item2))),
         (6, Gen.Choose(1, 200_000_000).Select(i => -i / 1e6f)),
         (6, Gen.Zip(Gen.Choose(-50_000, 50_000), Gen.Choose(0, 999)).Select(t => t.Item1 + (t.Item2 / 1000f))),
         (3, Gen.Elements(1e6f, -1e6f, 1e7f, -1e30f, 3e38f, float.MaxValue, float.MinValue)),
@@ -60,18 +60,4 @@ public static class LandGens
 
     private static Gen<byte> Bytes(int lo, int hi) => Gen.Choose(lo, hi).Select(i => (byte)i);
 
-    private static float StepUlps(float v, int ulps)
-    {
-        for (; ulps > 0; ulps--)
-        {
-            v = MathF.BitIncrement(v);
-        }
-
-        for (; ulps < 0; ulps++)
-        {
-            v = MathF.BitDecrement(v);
-        }
-
-        return v;
-    }
 }

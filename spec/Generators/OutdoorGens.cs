@@ -21,7 +21,7 @@ public static class OutdoorGens
         (6, Gen.Choose(0, 192 * 1024 - 1).Select(i => i * Quantum)),
         (3, Gen.Choose(0, 8).Select(k => k * 24f)),
         (5, Gen.Zip(Gen.Choose(0, 8), Gen.Choose(-2048, 2048)).Select(t => (t.Item1 * 24f) + (t.Item2 * Quantum))),
-        (2, Gen.Zip(Gen.Elements(0f, 24f, 168f, 192f), Gen.Elements(-4, -3, -2, -1, 1, 2, 3, 4)).Select(t => StepUlps(t.Item1, t.Item2))),
+        (2, Gen.Zip(Gen.Elements(0f, 24f, 168f, 192f), Gen.Elements(-4, -3, -2, -1, 1, 2, 3, 4)).Select(t => Ulps.Step(t.Item1, t.Item2))),
         (2, Gen.Choose(-30 * 1024, 222 * 1024).Select(i => i * Quantum)));
 
     /// <summary>Gets radii: 0, typical, exactly 12 and just above, up to and beyond a cell (24 m).</summary>
@@ -51,18 +51,4 @@ public static class OutdoorGens
     /// <summary>Gets the arbitrary for outdoor queries.</summary>
     public static Arbitrary<OutdoorCase> Arbitrary { get; } = Arb.From(Cases, OutdoorShrinker.Shrink);
 
-    internal static float StepUlps(float v, int ulps)
-    {
-        for (; ulps > 0; ulps--)
-        {
-            v = MathF.BitIncrement(v);
-        }
-
-        for (; ulps < 0; ulps++)
-        {
-            v = MathF.BitDecrement(v);
-        }
-
-        return v;
-    }
 }

@@ -67,8 +67,8 @@ public static class WalkGens
     // One ULP either side of the block line x = 192, stepping by single ULPs.
     private static Gen<Walk> Oscillation() => Make(
         InnerCells,
-        Gen.Zip(Gen.Elements(-2, -1, 0, 1), Gen.Choose(0, 191 * 1024)).Select(t => new Vector3(OutdoorGens.StepUlps(192f, t.Item1), t.Item2 * Q, 0)),
-        StepsOf(Gen.Elements(1, -1, 2, -2).Select(u => new Vector2(OutdoorGens.StepUlps(192f, u) - 192f, 0))));
+        Gen.Zip(Gen.Elements(-2, -1, 0, 1), Gen.Choose(0, 191 * 1024)).Select(t => new Vector3(Ulps.Step(192f, t.Item1), t.Item2 * Q, 0)),
+        StepsOf(Gen.Elements(1, -1, 2, -2).Select(u => new Vector2(Ulps.Step(192f, u) - 192f, 0))));
 
     // Jumps of several blocks.
     private static Gen<Walk> Jumps() => Make(

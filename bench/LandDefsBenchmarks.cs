@@ -1,0 +1,34 @@
+using AcPhys.Core;
+using BenchmarkDotNet.Attributes;
+
+namespace AcPhys.Bench;
+
+/// <summary>The LandDefs hot paths (facts §2): ns/op and bytes allocated (must be 0).</summary>
+[MemoryDiagnoser]
+public class LandDefsBenchmarks
+{
+    private readonly CellId cell = new(0xA9B40031);
+
+    [Benchmark(Description = "AdjustToOutside across a block line")]
+    public CellId AdjustToOutside()
+    {
+        var id = cell;
+        float x = 150f, y = -0.5f;
+        LandDefs.AdjustToOutside(ref id, ref x, ref y);
+        return id;
+    }
+
+    [Benchmark(Description = "GetOutsideLcoord")]
+    public Lcoord GetOutsideLcoord()
+    {
+        LandDefs.GetOutsideLcoord(cell, 150f, -0.5f, out var lc);
+        return lc;
+    }
+
+    [Benchmark(Description = "GidToLcoord + LcoordToGid")]
+    public CellId RoundTrip()
+    {
+        LandDefs.GidToLcoord(cell, out var lc);
+        return LandDefs.LcoordToGid(lc);
+    }
+}
