@@ -2,12 +2,11 @@ namespace AcPhys.Core;
 
 /// <summary>Which behaviour to follow where ACE and retail differ on the outdoor paths (facts §7). Retail by default.</summary>
 /// <param name="DropUnloadedCells">ACE (§7 #2): skip a land cell whose block is not loaded; retail adds it as a load hint.</param>
-/// <param name="SameBlockGuard">ACE (§7 #3): add_cell_block skips cells outside the calling cell's block (its "FIXME" guard); retail has none.</param>
-public readonly record struct OutdoorFidelity(bool DropUnloadedCells = false, bool SameBlockGuard = false)
+public readonly record struct OutdoorFidelity(bool DropUnloadedCells = false)
 {
     /// <summary>Gets retail behaviour.</summary>
     public static OutdoorFidelity Retail => default;
 
     /// <summary>Gets ACE's behaviour, as documented divergences.</summary>
-    public static OutdoorFidelity Ace => new(DropUnloadedCells: true, SameBlockGuard: true);
+    public static OutdoorFidelity Ace => new(DropUnloadedCells: true);
 }

@@ -57,3 +57,45 @@ public sealed class OutdoorGoldens
         Assert.Equal([new CellId(0x00000001)], array.ToIdArray());
     }
 }
+
+/// <summary>Unloaded landblocks (facts §3.1, §7 #2): retail adds their cells as load hints; ACE drops them.</summary>
+public sealed class LoadHints
+{
+    private sealed class OnlyBlock(LandblockId loaded) : ILandscape
+    {
+        public bool IsLoaded(LandblockId block) => block == loaded;
+    }
+
+    private static readonly Sphere[] Corner = [new Sphere(new System.Numerics.Vector3(0.1f, 0.2f, 0), 0.5f)];
+
+    [Fact(DisplayName = "facts §3.1: retail adds cells of unloaded blocks as load hints, in the same order, never picked")]
+    public void RetailAddsLoadHints()
+    {
+        var array = new CellArray();
+        var position = new CellId(0xA9B40005);
+        var containing = CellQuery.FindCellListOutdoor(array, position, Corner, CellId.None, PickPolicy.Retail, new OnlyBlock(position.Landblock));
+        Assert.Equal([0xA9B40001u, 0xA8B40039u, 0xA8B30040u, 0xA9B30008u], array.ToIdArray().Select(c => c.Value));
+        Assert.Equal([true, false, false, false], Enumerable.Range(0, array.Count).Select(i => array[i].Loaded));
+        Assert.Equal(new CellId(0xA9B40001), containing);
+    }
+
+    [Fact(DisplayName = "facts §7 #2: with ACE fidelity, cells of unloaded blocks are dropped")]
+    public void AceDropsUnloaded()
+    {
+        var array = new CellArray();
+        var position = new CellId(0xA9B40005);
+        CellQuery.FindCellListOutdoor(array, position, Corner, CellId.None, PickPolicy.Retail, new OnlyBlock(position.Landblock), OutdoorFidelity.Ace);
+        Assert.Equal([new CellId(0xA9B40001)], array.ToIdArray());
+    }
+
+    [Fact(DisplayName = "facts §4: a load hint is never picked, even when its square holds the centre")]
+    public void HintIsNeverPicked()
+    {
+        var array = new CellArray();
+        var position = new CellId(0xA9B40005);
+        var westOfLine = new[] { new Sphere(new System.Numerics.Vector3(-0.5f, 100, 0), 0.5f) };
+        var containing = CellQuery.FindCellListOutdoor(array, position, westOfLine, CellId.None, PickPolicy.Retail, new OnlyBlock(position.Landblock));
+        Assert.Contains(new CellId(0xA8B4003D), array.ToIdArray());
+        Assert.Equal(CellId.None, containing);
+    }
+}
