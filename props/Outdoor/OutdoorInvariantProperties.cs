@@ -41,3 +41,13 @@ public sealed class OutdoorInvariantProperties(ITestOutputHelper output)
     [Fact(DisplayName = "MAP-EDGE-WALK: walks along and off the map edge never produce ids outside the map")]
     public void MapEdgeWalk() => PropertyRun.Check(WalkInvariants.MapEdgeWalk, output);
 }
+
+/// <summary>The parts / bounding-box variant as FsCheck properties.</summary>
+public sealed class PartsInvariantProperties(ITestOutputHelper output)
+{
+    [Fact(DisplayName = "PARTS-COVERAGE: every cell a part's box overlaps, and the anchor's cell, is in the set")]
+    public void PartsCoverage() => PropertyRun.Check(PartsInvariants.PartsCoverage, output);
+
+    [Fact(DisplayName = "PARTS-SOUNDNESS: every cell lies in the range of the anchor's cell and the parts' boxes")]
+    public void PartsSoundness() => PropertyRun.Check(PartsInvariants.PartsSoundness, output);
+}

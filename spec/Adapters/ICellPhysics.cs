@@ -72,6 +72,11 @@ public interface ICellPhysics
     /// <param name="current">The current cell, or <see cref="CellId.None"/>.</param>
     /// <returns>The cells and the containing cell (<see cref="CellId.None"/> when none).</returns>
     FindCellResult FindCell(CellId cell, IReadOnlyList<Sphere> spheres, CellId current);
+
+    /// <summary><c>outside_cells_parts</c>: the land cells the parts' boxes cover (first part the anchor and the caller), every block loaded.</summary>
+    /// <param name="parts">The parts.</param>
+    /// <returns>The cell ids in insertion order.</returns>
+    IReadOnlyList<CellId> OutsideCellsParts(IReadOnlyList<Part> parts);
 }
 
 /// <summary>The answer of <c>find_cell</c>.</summary>

@@ -31,11 +31,14 @@ public enum Op
     /// <summary><c>find_cell</c>: find_cell_list (open land today; scenes later).</summary>
     FindCell = 1 << 7,
 
+    /// <summary><c>outside_cells_parts</c>: the parts / bounding-box variant (facts §3.4); an optional extension of protocol v1.</summary>
+    OutsideCellsParts = 1 << 8,
+
     /// <summary>Every LandDefs operation.</summary>
     LandDefs = BlockIdToLcoord | GidToLcoord | LcoordToGid | InboundValidCellId | GetOutsideLcoord | AdjustToOutside,
 
     /// <summary>Every operation of protocol v1 on open land.</summary>
-    All = LandDefs | OutsideCells | FindCell,
+    All = LandDefs | OutsideCells | FindCell | OutsideCellsParts,
 }
 
 /// <summary>Protocol names of <see cref="Op"/> values.</summary>
@@ -51,6 +54,7 @@ public static class OpNames
         (Op.AdjustToOutside, "adjust_to_outside"),
         (Op.OutsideCells, "outside_cells"),
         (Op.FindCell, "find_cell"),
+        (Op.OutsideCellsParts, "outside_cells_parts"),
     ];
 
     /// <summary>Returns the protocol names of every flag set in <paramref name="ops"/>.</summary>

@@ -4,7 +4,8 @@ namespace AcPhys.Spec.Adapters;
 
 /// <summary>The bundled reference core (AcPhys.Core) behind the adapter contract.</summary>
 /// <param name="pick">The pick policy to declare and use.</param>
-public sealed class ReferenceAdapter(PickPolicy pick = PickPolicy.Retail) : ICellPhysics
+/// <param name="partsFidelity">Retail or ACE behaviour of the parts variant (facts §7 #3–#4).</param>
+public sealed class ReferenceAdapter(PickPolicy pick = PickPolicy.Retail, PartsFidelity partsFidelity = default) : ICellPhysics
 {
     [ThreadStatic]
     private static CellArray? scratch;
@@ -16,7 +17,8 @@ public sealed class ReferenceAdapter(PickPolicy pick = PickPolicy.Retail) : ICel
     public static ReferenceAdapter CurrentFirst { get; } = new(PickPolicy.CurrentFirst);
 
     /// <inheritdoc/>
-    public string Name => pick == PickPolicy.Retail ? "reference" : "reference(current-first)";
+    public string Name => (pick == PickPolicy.Retail ? "reference" : "reference(current-first)")
+        + (partsFidelity.SameBlockGuard ? "+ace-same-block-guard" : string.Empty) + (partsFidelity.EveryPartAnchors ? "+ace-every-part-anchors" : string.Empty);
 
     /// <inheritdoc/>
     public Op Ops => Op.All;
@@ -61,5 +63,18 @@ public sealed class ReferenceAdapter(PickPolicy pick = PickPolicy.Retail) : ICel
         var array = scratch ??= new CellArray();
         var containing = CellQuery.FindCellListOutdoor(array, cell, [.. spheres], current, pick, OpenLand.Instance);
         return new FindCellResult(array.ToIdArray(), containing);
+    }
+
+    /// <inheritdoc/>
+    public IReadOnlyList<CellId> OutsideCellsParts(IReadOnlyList<Part> parts)
+    {
+        var array = scratch ??= new CellArray();
+        array.Reset();
+        if (parts.Count > 0)
+        {
+            OutdoorParts.AddAllOutsideCells(array, [.. parts], parts[0].Cell, OpenLand.Instance, partsFidelity);
+        }
+
+        return array.ToIdArray();
     }
 }

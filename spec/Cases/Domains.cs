@@ -50,3 +50,36 @@ public sealed class WalkDomain : ICaseDomain<Walk>
     /// <inheritdoc/>
     public string Primary(Walk w) => PlaceClasses.OfWalk(w).FirstOrDefault() ?? "walk:within-one-cell";
 }
+
+/// <summary>The parts-query case domain.</summary>
+public sealed class PartsDomain : ICaseDomain<PartsCase>
+{
+    /// <summary>Gets the instance.</summary>
+    public static PartsDomain Instance { get; } = new();
+
+    /// <inheritdoc/>
+    public Arbitrary<PartsCase> Arbitrary => PartsGens.Arbitrary;
+
+    /// <inheritdoc/>
+    public IEnumerable<string> Classes(PartsCase c)
+    {
+        yield return c.Parts.Count > 1 ? "parts:multi" : "parts:one";
+        if (c.Parts.Any(p => p.Always2D))
+        {
+            yield return "parts:always2d";
+        }
+
+        if (c.Parts.Any(p => p.Frame.Rotation != System.Numerics.Quaternion.Identity))
+        {
+            yield return "parts:rotated";
+        }
+
+        if (c.Parts.Any(p => p.Frame.Origin.X is < 0 or >= 192 || p.Frame.Origin.Y is < 0 or >= 192))
+        {
+            yield return "parts:outside-frame";
+        }
+    }
+
+    /// <inheritdoc/>
+    public string Primary(PartsCase c) => Classes(c).Last();
+}

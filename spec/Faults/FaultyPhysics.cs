@@ -132,6 +132,9 @@ internal sealed class FaultyPhysics : ICellPhysics
         ? (float)(v - Math.Floor(v / 192.0))
         : (float)(v - (192.0 * Math.Floor(v / 192.0)));
 
+    // The parts variant has no planted defect of its own here: it answers as core (ace-same-block-guard is core's ACE option).
+    public IReadOnlyList<CellId> OutsideCellsParts(IReadOnlyList<Part> parts) => ReferenceAdapter.Instance.OutsideCellsParts(parts);
+
     public IReadOnlyList<CellId> OutsideCells(CellId cell, IReadOnlyList<Sphere> spheres)
     {
         var cells = NewArray();

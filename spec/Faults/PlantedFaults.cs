@@ -1,3 +1,4 @@
+using AcPhys.Core;
 using AcPhys.Spec.Adapters;
 
 namespace AcPhys.Spec.Faults;
@@ -110,11 +111,25 @@ public static class PlantedFaults
         "issue #3: a retail-declared port with a hidden hysteresis; on a shared edge the cell then depends on the path, not the position.",
         ["STABLE-PICK", "WALK-REVERSIBLE"]);
 
+    /// <summary>ACE's add_cell_block guard applied to movers.</summary>
+    public static readonly PlantedFault AceSameBlockGuard = new(
+        "ace-same-block-guard",
+        "add_cell_block skips cells outside the calling cell's landblock (ACE's FIXME guard)",
+        "facts §7 #3 and the seed: ACE's guard, an ACE divergence; applied to a mover it drops every cell across a block line.",
+        ["PARTS-COVERAGE"]);
+
+    /// <summary>ACE's every-part-anchor parts variant.</summary>
+    public static readonly PlantedFault AceEveryPartAnchors = new(
+        "ace-every-part-anchors",
+        "every part anchors its own add_cell_block over a range that only grows (ACE)",
+        "facts §7 #4: ACE makes every part an anchor and never resets the running range, so a multi-part object spills into cells none of its boxes touch; retail uses the first part only.",
+        ["PARTS-SOUNDNESS"]);
+
     /// <summary>Gets every planted fault.</summary>
     public static IReadOnlyList<PlantedFault> All { get; } =
     [
         TruncFloor, NanAsZero, MapEdge2040, SignExtendBlockY, DropBlockLength, NoEpsSnap, InboundXOnly,
-        Clamp106, InCellNeighbours, ElseDiagonal, SphereGuardInverted, SphereLeak, NoReset, NoHysteresis, StickyPick,
+        Clamp106, InCellNeighbours, ElseDiagonal, SphereGuardInverted, SphereLeak, NoReset, NoHysteresis, StickyPick, AceSameBlockGuard, AceEveryPartAnchors,
     ];
 
     /// <summary>No defect: the fault model as it is when nothing is switched on (tests compare it with core).</summary>
@@ -137,6 +152,11 @@ public static class PlantedFaults
     {
         var fault = Find(id) ?? throw new ArgumentException(
             $"unknown fault '{id}'; known: {string.Join(", ", All.Select(f => f.Id))}", nameof(id));
-        return new FaultyPhysics(fault);
+        return fault.Id switch
+        {
+            "ace-same-block-guard" => new ReferenceAdapter(PickPolicy.Retail, new PartsFidelity(SameBlockGuard: true)),
+            "ace-every-part-anchors" => new ReferenceAdapter(PickPolicy.Retail, new PartsFidelity(EveryPartAnchors: true)),
+            _ => new FaultyPhysics(fault),
+        };
     }
 }

@@ -8,7 +8,7 @@ namespace AcPhys.Spec.Invariants;
 public static class InvariantCatalogue
 {
     /// <summary>Gets every invariant, in catalogue order.</summary>
-    public static IReadOnlyList<Invariant> All { get; } = [.. LandInvariants.All, .. OutdoorInvariants.All, .. WalkInvariants.All];
+    public static IReadOnlyList<Invariant> All { get; } = [.. LandInvariants.All, .. OutdoorInvariants.All, .. WalkInvariants.All, .. PartsInvariants.All];
 
     /// <summary>Gets the invariants over <see cref="LandCase"/>.</summary>
     public static IReadOnlyList<Invariant<LandCase>> Land => LandInvariants.All;

@@ -1,0 +1,69 @@
+using System.Numerics;
+using AcPhys.Core;
+using AcPhys.Spec.Cases;
+using FsCheck;
+using FsCheck.Fluent;
+
+namespace AcPhys.Spec.Generators;
+
+/// <summary>Generators for parts queries: 1–4 parts near cell and block lines, arbitrary rotations, boxes from 5 cm to 30 m, some Always2D.</summary>
+public static class PartsGens
+{
+    private static Gen<float> Half => Gen.Frequency((3, Gen.Choose(50, 3000).Select(i => i / 1000f)), (1, Gen.Choose(3000, 15000).Select(i => i / 1000f)));
+
+    private static Gen<Quaternion> Rotations => Gen.Frequency(
+        (1, Gen.Constant(Quaternion.Identity)),
+        (1, Gen.Choose(0, 359).Select(d => Quaternion.CreateFromAxisAngle(Vector3.UnitZ, d * MathF.PI / 180f))),
+        (2, Gen.Zip(Gen.Zip(Gen.Choose(-1000, 1000), Gen.Choose(-1000, 1000)), Gen.Zip(Gen.Choose(-1000, 1000), Gen.Choose(1, 1000)))
+            .Select(t => Quaternion.Normalize(new Quaternion(t.Item1.Item1, t.Item1.Item2, t.Item2.Item1, t.Item2.Item2)))));
+
+    private static Gen<Part> PartsIn(CellId cell) =>
+        Gen.Zip(Gen.Zip(OutdoorGens.Coordinates, OutdoorGens.Coordinates), Gen.Zip(Rotations, Gen.Zip(Gen.Zip(Half, Half), Gen.Zip(Half, Gen.Choose(0, 4)))))
+            .Select(t => new Part(
+                cell,
+                new Frame(new Vector3(t.Item1.Item1, t.Item1.Item2, 0.5f), t.Item2.Item1),
+                new Box(new Vector3(-t.Item2.Item2.Item1.Item1, -t.Item2.Item2.Item1.Item2, -t.Item2.Item2.Item2.Item1), new Vector3(t.Item2.Item2.Item1.Item1, t.Item2.Item2.Item1.Item2, t.Item2.Item2.Item2.Item1)),
+                t.Item2.Item2.Item1.Item1,
+                t.Item2.Item2.Item2.Item2 == 0));
+
+    /// <summary>Gets parts queries (all parts in one block frame).</summary>
+    public static Gen<PartsCase> Cases { get; } =
+        Gen.Zip(OutdoorGens.Cells, Gen.Choose(1, 4)).SelectMany(t => Gen.ArrayOf(PartsIn(t.Item1), t.Item2).Select(p => new PartsCase(p)));
+
+    /// <summary>Gets the arbitrary: drop parts, then simplify the anchor's origin.</summary>
+    public static Arbitrary<PartsCase> Arbitrary { get; } = Arb.From(Cases, Shrink);
+
+    private static IEnumerable<PartsCase> Shrink(PartsCase c)
+    {
+        for (int i = c.Parts.Count - 1; i >= 1; i--)
+        {
+            yield return new PartsCase([.. c.Parts.Take(i), .. c.Parts.Skip(i + 1)]);
+        }
+
+        for (int i = 0; i < c.Parts.Count; i++)
+        {
+            var p = c.Parts[i];
+            if (p.Frame.Rotation != Quaternion.Identity)
+            {
+                yield return With(c, i, p with { Frame = p.Frame with { Rotation = Quaternion.Identity } });
+            }
+
+            foreach (var x in Snap.Simpler(p.Frame.Origin.X))
+            {
+                yield return With(c, i, p with { Frame = p.Frame with { Origin = p.Frame.Origin with { X = x } } });
+            }
+
+            foreach (var y in Snap.Simpler(p.Frame.Origin.Y))
+            {
+                yield return With(c, i, p with { Frame = p.Frame with { Origin = p.Frame.Origin with { Y = y } } });
+            }
+        }
+    }
+
+    private static PartsCase With(PartsCase c, int i, Part p)
+    {
+        var parts = c.Parts.ToArray();
+        parts[i] = p;
+        return new PartsCase(parts);
+    }
+}
