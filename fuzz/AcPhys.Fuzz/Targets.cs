@@ -12,6 +12,7 @@ internal static class Targets
     public static IReadOnlyList<FuzzTarget> All { get; } =
     [
         LandTarget.Target,
+        WalkTarget.Target,
         new("toy", "pipeline smoke test: nested magic-bytes check, crashes on the prefix \"AC!P\"", CreateToy, ToySeeds),
         new("toy-slow", "timeout smoke test: as toy, but inputs starting with 'Z' take 300 ms", CreateToySlow, ToySeeds),
     ];
