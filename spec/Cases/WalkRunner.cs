@@ -8,7 +8,7 @@ namespace AcPhys.Spec.Cases;
 /// <param name="Index">0 for the start query, then 1..n.</param>
 /// <param name="Frame">The cell id whose block frame <paramref name="Position"/> is in (the cell passed to find_cell).</param>
 /// <param name="Position">Block-frame position before re-framing.</param>
-/// <param name="WorldX">The position in world metres, accumulated independently in double from the walk.</param>
+/// <param name="WorldX">The position in world metres: 192·bx of <paramref name="Frame"/> + the client's float32 position, exact in double.</param>
 /// <param name="WorldY">As <paramref name="WorldX"/>.</param>
 /// <param name="Query">The find_cell query that was asked.</param>
 /// <param name="Cells">The candidate cells answered.</param>
@@ -33,17 +33,16 @@ public static class WalkRunner
         var frame = walk.StartCell;
         var position = walk.Start;
         var current = CellId.None;
-        double worldX = (192.0 * walk.StartCell.BlockX) + walk.Start.X;
-        double worldY = (192.0 * walk.StartCell.BlockY) + walk.Start.Y;
         for (int i = 0; i <= walk.Steps.Count; i++)
         {
             if (i > 0)
             {
                 var d = walk.Steps[i - 1];
                 position += new Vector3(d.X, d.Y, 0);
-                worldX += d.X;
-                worldY += d.Y;
             }
+
+            // The world point of the position the client holds (float32 drift included): re-framing preserves it.
+            double worldX = (192.0 * frame.BlockX) + position.X, worldY = (192.0 * frame.BlockY) + position.Y;
 
             var query = new OutdoorCase(frame, walk.SpheresAt(position));
             var answer = impl.FindCell(frame, query.Spheres, current);
