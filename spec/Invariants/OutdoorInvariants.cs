@@ -112,12 +112,9 @@ public static class OutdoorInvariants
                         continue;
                     }
 
-                    var shift = new Vector3(192f * dbx, 192f * dby, 0);
-                    var moved = c.Spheres.Select(s => s with { Center = s.Center - shift }).ToArray();
-                    if (!moved.Zip(c.Spheres).All(p => p.First.Center + shift == p.Second.Center)
-                        || moved.Concat(c.Spheres).Any(FrameSensitive))
+                    if (!TryShift(c.Spheres, new Vector3(-192f * dbx, -192f * dby, 0), out var moved))
                     {
-                        continue; // not exactly representable in the other frame, or frame-dependent by retail's snap
+                        continue;
                     }
 
                     applied = true;
@@ -145,10 +142,7 @@ public static class OutdoorInvariants
             bool applied = false;
             foreach (var (kx, ky) in new[] { (1, 0), (0, -1), (-3, 2), (8, 0), (-8, 8), (17, -9) })
             {
-                var shift = new Vector3(24f * kx, 24f * ky, 0);
-                var moved = c.Spheres.Select(s => s with { Center = s.Center + shift }).ToArray();
-                if (!moved.Zip(c.Spheres).All(p => p.First.Center - shift == p.Second.Center) || !AwayFromEdge(c, kx, ky)
-                    || moved.Concat(c.Spheres).Any(FrameSensitive))
+                if (!AwayFromEdge(c, kx, ky) || !TryShift(c.Spheres, new Vector3(24f * kx, 24f * ky, 0), out var moved))
                 {
                     continue;
                 }
@@ -301,6 +295,22 @@ public static class OutdoorInvariants
     {
         var (dx, dy) = Gap(frame, cell, p);
         return Math.Max(dx, dy) <= margin;
+    }
+
+    // Shifts every centre; false when a shifted centre is not exact (it would not be the same world point) or when
+    // either version sits where retail's float32 cell math depends on the frame (FrameSensitive).
+    private static bool TryShift(IReadOnlyList<Sphere> spheres, Vector3 shift, out Sphere[] moved)
+    {
+        moved = spheres.Select(s => s with { Center = s.Center + shift }).ToArray();
+        for (int i = 0; i < moved.Length; i++)
+        {
+            if (moved[i].Center - shift != spheres[i].Center || FrameSensitive(moved[i]) || FrameSensitive(spheres[i]))
+            {
+                return false;
+            }
+        }
+
+        return true;
     }
 
     private static (double West, double South) SquareOrigin(CellId frame, CellId cell)
