@@ -1,4 +1,5 @@
 using AcPhys.Spec.Adapters;
+using AcPhys.Spec.Corpus;
 using AcPhys.Spec.Invariants;
 using AcPhys.Spec.Running;
 using Xunit.Abstractions;
@@ -67,8 +68,14 @@ internal static class PropertyRun
     {
         var replay = result.Replay ?? result.Seed;
         string fault = impl.Name.StartsWith("reference+", StringComparison.Ordinal) ? " --fault " + impl.Name["reference+".Length..] : string.Empty;
+        string file = result.Violation is { } v
+            && FailureFile.Write(v, Path.Combine(RepoPaths.Root, "artifacts", "failures"), "props", result.Seed.ToString()) is string path
+            ? path
+            : "(this case type is not stored)";
         return string.Join(
             Environment.NewLine,
+            $"  case file: {file}",
+            $"  replay:   ./acphys replay {Path.GetRelativePath(RepoPaths.Root, file)}{fault}",
             $"{result.Invariant.Id} violated by {impl.Name}: {result.Invariant.Statement}",
             $"  shrunk:   {result.Violation}",
             $"  original: {result.Original}",
