@@ -1,4 +1,5 @@
 using AcPhys.Core;
+using AcPhys.Spec.Scenes;
 
 namespace AcPhys.Spec.Adapters;
 
@@ -77,9 +78,26 @@ public interface ICellPhysics
     /// <param name="parts">The parts.</param>
     /// <returns>The cell ids in insertion order.</returns>
     IReadOnlyList<CellId> OutsideCellsParts(IReadOnlyList<Part> parts);
+
+    /// <summary>
+    /// <c>find_cell_scene</c>: find_cell_list over a scene (facts §4, §5), or on open land when <paramref name="scene"/> is null.
+    /// The pick runs; the indoor visibility filter is on (LoadCells false), so candidates of an indoor position are
+    /// its cell and the cells it sees. Offered when <see cref="Ops"/> has <see cref="Op.FindCellScene"/>.
+    /// </summary>
+    /// <param name="scene">The scene, or null for open land.</param>
+    /// <param name="cell">The position's cell id (land or env).</param>
+    /// <param name="spheres">Centres in <paramref name="cell"/>'s block frame; sphere 0 decides the pick.</param>
+    /// <param name="current">The current cell, or <see cref="CellId.None"/>.</param>
+    /// <returns>The cells (load hints included) and the containing cell.</returns>
+    FindCellResult FindCell(Scene? scene, CellId cell, IReadOnlyList<Sphere> spheres, CellId current) =>
+        scene is null ? FindCell(cell, spheres, current) : throw new NotSupportedException("find_cell_scene");
 }
 
 /// <summary>The answer of <c>find_cell</c>.</summary>
 /// <param name="Cells">Candidate cells in insertion order.</param>
 /// <param name="Containing">The containing cell, or <see cref="CellId.None"/>.</param>
-public sealed record FindCellResult(IReadOnlyList<CellId> Cells, CellId Containing);
+public sealed record FindCellResult(IReadOnlyList<CellId> Cells, CellId Containing)
+{
+    /// <summary>Gets a value indicating whether the query reported HitsInteriorCell (scene queries only).</summary>
+    public bool HitsInteriorCell { get; init; }
+}

@@ -34,6 +34,9 @@ public enum Op
     /// <summary><c>outside_cells_parts</c>: the parts / bounding-box variant (facts §3.4); an optional extension of protocol v1.</summary>
     OutsideCellsParts = 1 << 8,
 
+    /// <summary><c>find_cell_scene</c>: find_cell_list over a scene (env cells, portals, buildings; docs/indoor.md).</summary>
+    FindCellScene = 1 << 9,
+
     /// <summary>Every LandDefs operation.</summary>
     LandDefs = BlockIdToLcoord | GidToLcoord | LcoordToGid | InboundValidCellId | GetOutsideLcoord | AdjustToOutside,
 
@@ -55,6 +58,7 @@ public static class OpNames
         (Op.OutsideCells, "outside_cells"),
         (Op.FindCell, "find_cell"),
         (Op.OutsideCellsParts, "outside_cells_parts"),
+        (Op.FindCellScene, "find_cell_scene"),
     ];
 
     /// <summary>Returns the protocol names of every flag set in <paramref name="ops"/>.</summary>

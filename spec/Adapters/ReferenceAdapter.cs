@@ -1,4 +1,5 @@
 using AcPhys.Core;
+using AcPhys.Spec.Scenes;
 
 namespace AcPhys.Spec.Adapters;
 
@@ -21,7 +22,13 @@ public sealed class ReferenceAdapter(PickPolicy pick = PickPolicy.Retail, PartsF
         + (partsFidelity.SameBlockGuard ? "+ace-same-block-guard" : string.Empty) + (partsFidelity.EveryPartAnchors ? "+ace-every-part-anchors" : string.Empty);
 
     /// <inheritdoc/>
-    public Op Ops => Op.All;
+    public Op Ops => Op.All | Op.FindCellScene;
+
+    /// <summary>Gets or initializes the indoor fidelity used by scene queries (retail by default).</summary>
+    public IndoorFidelity Indoor { get; init; }
+
+    /// <summary>Gets or initializes how scene cells are modelled: retail BSP semantics or the ACME AABB.</summary>
+    public VolumeMode Volumes { get; init; }
 
     /// <inheritdoc/>
     public PickPolicy Pick => pick;
@@ -63,6 +70,15 @@ public sealed class ReferenceAdapter(PickPolicy pick = PickPolicy.Retail, PartsF
         var array = scratch ??= new CellArray();
         var containing = CellQuery.FindCellListOutdoor(array, cell, [.. spheres], current, pick, OpenLand.Instance);
         return new FindCellResult(array.ToIdArray(), containing);
+    }
+
+    /// <inheritdoc/>
+    public FindCellResult FindCell(Scene? scene, CellId cell, IReadOnlyList<Sphere> spheres, CellId current)
+    {
+        var array = scratch ??= new CellArray();
+        var built = scene is null ? CellScene.Open : SceneBuild.Build(scene, Volumes);
+        var result = SceneQuery.FindCellList(array, built, cell, [.. spheres], current, new CellQueryOptions(pick, true, false, Indoor));
+        return new FindCellResult(array.ToIdArray(), result.Containing) { HitsInteriorCell = result.HitsInteriorCell };
     }
 
     /// <inheritdoc/>

@@ -1,0 +1,152 @@
+using System.Numerics;
+
+namespace AcPhys.Core;
+
+/// <summary>
+/// A convex piece of a cell's volume: the intersection of the inner half-spaces of its planes (N·p + D ≥ 0 is
+/// inside), in the cell's local frame. Cells are unions of pieces (an L-shaped room is two boxes).
+/// </summary>
+public sealed class ConvexPiece
+{
+    private readonly CellPlane[] planes;
+
+    /// <summary>Initializes a new instance.</summary>
+    /// <param name="planes">Inner half-spaces; at least 4, each valid, and bounded (a finite, non-empty volume).</param>
+    /// <exception cref="ArgumentException">A plane is degenerate or non-finite, or the planes bound no finite volume.</exception>
+    public ConvexPiece(IReadOnlyList<CellPlane> planes)
+    {
+        if (planes.Count < 4)
+        {
+            throw new ArgumentException("a convex piece needs at least 4 planes", nameof(planes));
+        }
+
+        this.planes = new CellPlane[planes.Count];
+        for (int i = 0; i < planes.Count; i++)
+        {
+            if (!planes[i].IsValid)
+            {
+                throw new ArgumentException($"plane {i} is degenerate or non-finite", nameof(planes));
+            }
+
+            this.planes[i] = new CellPlane(Vector3.Normalize(planes[i].Normal), planes[i].D / planes[i].Normal.Length());
+        }
+
+        Vertices = ComputeVertices(this.planes);
+        if (Vertices.Count < 4 || Unbounded(this.planes))
+        {
+            throw new ArgumentException("the planes bound no finite volume", nameof(planes));
+        }
+
+        var min = new Vector3(float.MaxValue);
+        var max = new Vector3(float.MinValue);
+        foreach (var v in Vertices)
+        {
+            min = Vector3.Min(min, v);
+            max = Vector3.Max(max, v);
+        }
+
+        Bounds = new Box(min, max);
+    }
+
+    /// <summary>Gets the planes (unit normals pointing inward).</summary>
+    public IReadOnlyList<CellPlane> Planes => planes;
+
+    /// <summary>Gets the corner vertices.</summary>
+    public IReadOnlyList<Vector3> Vertices { get; }
+
+    /// <summary>Gets the axis-aligned bounds of the vertices.</summary>
+    public Box Bounds { get; }
+
+    /// <summary>Gets a value indicating whether the piece is an axis-aligned box (6 axis planes).</summary>
+    public bool IsAxisBox => planes.Length == 6 && planes.All(p => MathF.Abs(p.Normal.X) + MathF.Abs(p.Normal.Y) + MathF.Abs(p.Normal.Z) == 1f);
+
+    /// <summary>Returns the axis-aligned box min..max as a piece.</summary>
+    /// <param name="min">Minimum corner.</param>
+    /// <param name="max">Maximum corner (each coordinate &gt; min's).</param>
+    /// <returns>The piece.</returns>
+    public static ConvexPiece FromBox(Vector3 min, Vector3 max) => new(
+    [
+        new CellPlane(Vector3.UnitX, -min.X), new CellPlane(-Vector3.UnitX, max.X),
+        new CellPlane(Vector3.UnitY, -min.Y), new CellPlane(-Vector3.UnitY, max.Y),
+        new CellPlane(Vector3.UnitZ, -min.Z), new CellPlane(-Vector3.UnitZ, max.Z),
+    ]);
+
+    /// <summary>Tests exact containment (closed, no EPS): every plane distance ≥ 0.</summary>
+    /// <param name="p">A local point.</param>
+    /// <returns>True when inside or on the boundary.</returns>
+    public bool Contains(Vector3 p)
+    {
+        foreach (var plane in planes)
+        {
+            if (plane.Distance(p) < 0)
+            {
+                return false;
+            }
+        }
+
+        return true;
+    }
+
+    private static List<Vector3> ComputeVertices(CellPlane[] planes)
+    {
+        var result = new List<Vector3>();
+        for (int i = 0; i < planes.Length; i++)
+        {
+            for (int j = i + 1; j < planes.Length; j++)
+            {
+                for (int k = j + 1; k < planes.Length; k++)
+                {
+                    if (!Intersect(planes[i], planes[j], planes[k], out var v) || !planes.All(p => p.Distance(v) >= -1e-3f))
+                    {
+                        continue;
+                    }
+
+                    if (!result.Any(r => Vector3.DistanceSquared(r, v) < 1e-8f))
+                    {
+                        result.Add(v);
+                    }
+                }
+            }
+        }
+
+        return result;
+    }
+
+    // Bounded iff no direction v has N·v ≥ 0 for every plane; the extreme rays of that cone are ±Nᵢ×Nⱼ or ±Nᵢ.
+    private static bool Unbounded(CellPlane[] planes)
+    {
+        bool Recedes(Vector3 v) => v.LengthSquared() > 1e-10f && planes.All(p => Vector3.Dot(p.Normal, Vector3.Normalize(v)) >= -1e-6f);
+        for (int i = 0; i < planes.Length; i++)
+        {
+            if (Recedes(planes[i].Normal) || Recedes(-planes[i].Normal))
+            {
+                return true;
+            }
+
+            for (int j = i + 1; j < planes.Length; j++)
+            {
+                var v = Vector3.Cross(planes[i].Normal, planes[j].Normal);
+                if (Recedes(v) || Recedes(-v))
+                {
+                    return true;
+                }
+            }
+        }
+
+        return false;
+    }
+
+    private static bool Intersect(CellPlane a, CellPlane b, CellPlane c, out Vector3 v)
+    {
+        var bc = Vector3.Cross(b.Normal, c.Normal);
+        float det = Vector3.Dot(a.Normal, bc);
+        if (MathF.Abs(det) < 1e-6f)
+        {
+            v = default;
+            return false;
+        }
+
+        v = ((-a.D * bc) - (b.D * Vector3.Cross(c.Normal, a.Normal)) - (c.D * Vector3.Cross(a.Normal, b.Normal))) / det;
+        return float.IsFinite(v.X) && float.IsFinite(v.Y) && float.IsFinite(v.Z);
+    }
+}
