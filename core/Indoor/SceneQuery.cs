@@ -31,12 +31,10 @@ public static class SceneQuery
 
         bool hits = false;
         bool indoor = position.IsIndoorByLowWord;
-        EnvCell? visibleEnv = null;
         bool visible;
         if (indoor)
         {
-            visibleEnv = scene.GetEnvCell(position);
-            visible = visibleEnv is not null;
+            visible = scene.GetEnvCell(position) is not null;
             hits = true;
             array.Add(position, visible);
         }
@@ -78,7 +76,7 @@ public static class SceneQuery
 
             if (options.Pick)
             {
-                containing = Pick(array, scene, position, spheres[0].Center, current, options, out interiorPick);
+                containing = PickContaining(array, scene, position, spheres[0].Center, current, options, out interiorPick);
                 hits |= interiorPick;
             }
         }
@@ -86,7 +84,7 @@ public static class SceneQuery
         bool filterGuard = fidelity.AceFilterOutsideGuard || (visible && !spheres.IsEmpty);
         if (!options.LoadCells && indoor && filterGuard && !(fidelity.AceEarlyReturn && interiorPick))
         {
-            Filter(array, scene, position, visibleEnv);
+            FilterVisible(array, scene, position);
         }
 
         return new CellQueryResult(containing, hits);
@@ -110,7 +108,16 @@ public static class SceneQuery
         return scene.GetEnvCell(cell) is { } env && env.PointInCell(local, fidelity);
     }
 
-    private static CellId Pick(CellArray array, IScene scene, CellId position, Vector3 center, CellId current, CellQueryOptions options, out bool interior)
+    /// <summary>The containing-cell pick (facts §4 step 4b): the first env hit wins; otherwise the last land hit; current-first keeps a current cell that still contains the centre.</summary>
+    /// <param name="array">The candidates.</param>
+    /// <param name="scene">The scene.</param>
+    /// <param name="position">The position whose block frame <paramref name="center"/> is in.</param>
+    /// <param name="center">Sphere 0's centre.</param>
+    /// <param name="current">The current cell.</param>
+    /// <param name="options">Policy and fidelity.</param>
+    /// <param name="interior">Whether an env cell was picked.</param>
+    /// <returns>The containing cell, or none.</returns>
+    public static CellId PickContaining(CellArray array, IScene scene, CellId position, Vector3 center, CellId current, CellQueryOptions options, out bool interior)
     {
         interior = false;
         bool keepLand = false;
@@ -151,8 +158,13 @@ public static class SceneQuery
         return keepLand ? current : pick;
     }
 
-    private static void Filter(CellArray array, IScene scene, CellId position, EnvCell? visible)
+    /// <summary>The indoor visibility filter (facts §4 step 5): keeps the position's cell, the loaded cells it sees, and every load hint.</summary>
+    /// <param name="array">The array, filtered in place (removal swaps the last entry into the hole).</param>
+    /// <param name="scene">The scene.</param>
+    /// <param name="position">The (indoor) position.</param>
+    public static void FilterVisible(CellArray array, IScene scene, CellId position)
     {
+        var visible = scene.GetEnvCell(position);
         // Facts §4 step 5: over a snapshot, keep the starting cell and the loaded cells it sees; load hints stay.
         int n = array.Count;
         Span<CellId> snapshot = n <= 256 ? stackalloc CellId[n] : new CellId[n];

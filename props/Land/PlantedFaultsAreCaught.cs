@@ -10,7 +10,7 @@ namespace AcPhys.Props.Land;
 /// <summary>Proof that the invariants bite: every planted fault is caught by the pr profile, by the invariants it names.</summary>
 public sealed class PlantedFaultsAreCaught(ITestOutputHelper output)
 {
-    public static TheoryData<string> FaultIds => new(PlantedFaults.All.Select(f => f.Id));
+    public static TheoryData<string> FaultIds => new(PlantedFaults.All.Except(IndoorFaults.All).Select(f => f.Id)); // indoor faults: props/Indoor/IndoorFaultsAreCaught
 
     [Theory(DisplayName = "Planted fault is caught by the pr profile, by an invariant it names, with a shrunk case")]
     [MemberData(nameof(FaultIds))]

@@ -49,7 +49,13 @@ public static class CorpusJson
             }
 
             w.WriteEndArray();
-            if (entry.Walk is { } walk)
+            if (entry.SceneWalk is { } sw)
+            {
+                w.WritePropertyName("scene");
+                Scenes.SceneJson.WriteValue(w, sw.Scene);
+                WalkJson.Write(w, sw.Walk);
+            }
+            else if (entry.Walk is { } walk)
             {
                 WalkJson.Write(w, walk);
             }
@@ -83,7 +89,7 @@ public static class CorpusJson
         JsonDocument doc;
         try
         {
-            doc = JsonDocument.Parse(json, new JsonDocumentOptions { CommentHandling = JsonCommentHandling.Disallow, MaxDepth = 16 });
+            doc = JsonDocument.Parse(json, new JsonDocumentOptions { CommentHandling = JsonCommentHandling.Disallow, MaxDepth = 24 });
         }
         catch (JsonException e)
         {
@@ -98,7 +104,7 @@ public static class CorpusJson
             var version = Prop(root, "version", source);
             Require(version.ValueKind == JsonValueKind.Number && version.TryGetInt32(out int v) && v == CorpusEntry.CurrentVersion, source, "$.version", $"expected {CorpusEntry.CurrentVersion}");
             string kind = Str(root, "kind", source);
-            Require(kind is "land" or "walk", source, "$.kind", "expected \"land\" or \"walk\"");
+            Require(kind is "land" or "walk" or "scene-walk", source, "$.kind", "expected \"land\" or \"walk\" (or \"scene-walk\")");
             string title = Str(root, "title", source);
             string foundBy = Str(root, "foundBy", source);
             Require(foundBy is "hand" or "props" or "fuzz" or "spec", source, "$.foundBy", "expected hand, props, fuzz or spec");
@@ -118,6 +124,21 @@ public static class CorpusJson
             }
 
             var header = new CorpusEntry { Title = title, Invariant = invariant, FoundBy = foundBy, Seed = seed, Catches = catches };
+            if (kind == "scene-walk")
+            {
+                Scenes.Scene scene;
+                try
+                {
+                    scene = Scenes.SceneJson.Read(Prop(root, "scene", source), source, "$.scene");
+                }
+                catch (Scenes.SceneFormatException e)
+                {
+                    throw new CorpusFormatException(e.Message, e);
+                }
+
+                return header with { SceneWalk = new SceneWalk(scene, WalkJson.Read(Prop(root, "walk", source), source)) };
+            }
+
             if (kind == "walk")
             {
                 return header with { Walk = WalkJson.Read(Prop(root, "walk", source), source) };

@@ -130,6 +130,7 @@ public static class PlantedFaults
     [
         TruncFloor, NanAsZero, MapEdge2040, SignExtendBlockY, DropBlockLength, NoEpsSnap, InboundXOnly,
         Clamp106, InCellNeighbours, ElseDiagonal, SphereGuardInverted, SphereLeak, NoReset, NoHysteresis, StickyPick, AceSameBlockGuard, AceEveryPartAnchors,
+        .. IndoorFaults.All,
     ];
 
     /// <summary>No defect: the fault model as it is when nothing is switched on (tests compare it with core).</summary>
@@ -156,7 +157,7 @@ public static class PlantedFaults
         {
             "ace-same-block-guard" => new ReferenceAdapter(PickPolicy.Retail, new PartsFidelity(SameBlockGuard: true)),
             "ace-every-part-anchors" => new ReferenceAdapter(PickPolicy.Retail, new PartsFidelity(EveryPartAnchors: true)),
-            _ => new FaultyPhysics(fault),
+            _ => IndoorFaults.Create(fault) ?? new FaultyPhysics(fault),
         };
     }
 }

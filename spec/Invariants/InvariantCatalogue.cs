@@ -8,7 +8,7 @@ namespace AcPhys.Spec.Invariants;
 public static class InvariantCatalogue
 {
     /// <summary>Gets every invariant, in catalogue order.</summary>
-    public static IReadOnlyList<Invariant> All { get; } = [.. LandInvariants.All, .. OutdoorInvariants.All, .. WalkInvariants.All, .. PartsInvariants.All];
+    public static IReadOnlyList<Invariant> All { get; } = [.. LandInvariants.All, .. OutdoorInvariants.All, .. WalkInvariants.All, .. PartsInvariants.All, .. IndoorInvariants.All];
 
     /// <summary>Gets the invariants over <see cref="LandCase"/>.</summary>
     public static IReadOnlyList<Invariant<LandCase>> Land => LandInvariants.All;
@@ -77,5 +77,22 @@ public static class InvariantCatalogue
     /// <param name="entry">The entry.</param>
     /// <returns>The first violation, or null.</returns>
     public static Violation? CheckEntry(ICellPhysics impl, CorpusEntry entry) =>
-        entry.Walk is { } walk ? CheckWalk(impl, walk) : CheckLandCase(impl, entry.Case!.Value);
+        entry.SceneWalk is { } sw ? CheckSceneWalk(impl, sw) : entry.Walk is { } walk ? CheckWalk(impl, walk) : CheckLandCase(impl, entry.Case!.Value);
+
+    /// <summary>Checks a scene walk against every testable scene invariant.</summary>
+    /// <param name="impl">The implementation under test.</param>
+    /// <param name="sw">The scene walk.</param>
+    /// <returns>The first violation, or null.</returns>
+    public static Violation? CheckSceneWalk(ICellPhysics impl, SceneWalk sw)
+    {
+        foreach (var invariant in IndoorInvariants.All)
+        {
+            if (invariant.IsTestable(impl) && invariant.Check(impl, sw) is { IsViolation: true } o)
+            {
+                return new Violation(invariant.Id, o.Message ?? "violated", sw.ToString()) { Case = sw };
+            }
+        }
+
+        return null;
+    }
 }

@@ -16,7 +16,9 @@ public sealed record ScenePiece(Box? Box, IReadOnlyList<CellPlane>? Planes)
 
     /// <summary>Builds the core piece.</summary>
     /// <returns>The convex piece.</returns>
-    public ConvexPiece ToConvex() => Box is { } b ? ConvexPiece.FromBox(b.Min, b.Max) : new ConvexPiece(Planes!);
+    public ConvexPiece ToConvex() => Cache.GetValue(this, p => p.Box is { } b ? ConvexPiece.FromBox(b.Min, b.Max) : new ConvexPiece(p.Planes!));
+
+    private static readonly System.Runtime.CompilerServices.ConditionalWeakTable<ScenePiece, ConvexPiece> Cache = [];
 }
 
 /// <summary>A portal of a scene cell: plane (cell-local), the cell behind (low word, 0xFFFF outside), PortalSide, and the other cell's portal index.</summary>

@@ -1,0 +1,35 @@
+using System.Diagnostics;
+using AcPhys.Props.Support;
+using AcPhys.Spec.Cases;
+using AcPhys.Spec.Faults;
+using AcPhys.Spec.Invariants;
+using AcPhys.Spec.Running;
+using Xunit.Abstractions;
+
+namespace AcPhys.Props.Indoor;
+
+/// <summary>Every indoor planted fault is caught by the pr profile by an invariant it names, and shrinks to a small scene and walk.</summary>
+public sealed class IndoorFaultsAreCaught(ITestOutputHelper output)
+{
+    public static TheoryData<string> FaultIds => new(IndoorFaults.All.Select(f => f.Id));
+
+    [Theory(DisplayName = "Indoor planted fault is caught by its named invariants with a shrunk scene walk (sizes printed)")]
+    [MemberData(nameof(FaultIds))]
+    public void FaultIsCaughtAndShrinks(string faultId)
+    {
+        var fault = PlantedFaults.Find(faultId)!;
+        var impl = PlantedFaults.Create(faultId);
+        foreach (var id in fault.CaughtBy)
+        {
+            var stopwatch = Stopwatch.StartNew();
+            var result = InvariantCatalogue.Find(id)!.Run(impl, Profile.Pr.CasesPerInvariant, PropertyRun.SeedFor(id));
+            Assert.True(result.Status == ResultStatus.Failed, $"{faultId} should be caught by {id}");
+            var shrunk = Assert.IsType<SceneWalk>(result.Violation!.Case);
+            var original = Assert.IsType<SceneWalk>(result.Original!.Case);
+            output.WriteLine($"{faultId} caught by {id} in {stopwatch.ElapsedMilliseconds} ms after {result.Cases} cases; shrunk to {shrunk.Size} (from {original.Size})");
+            output.WriteLine("  " + result.Violation.Message);
+            output.WriteLine("  " + shrunk.Recipe);
+            Assert.True(shrunk.Walk.Steps.Count <= original.Walk.Steps.Count);
+        }
+    }
+}

@@ -1,0 +1,59 @@
+using AcPhys.Spec.Generators;
+using FsCheck;
+
+namespace AcPhys.Spec.Cases;
+
+/// <summary>The scene-walk case domain.</summary>
+public sealed class SceneDomain : ICaseDomain<SceneWalk>
+{
+    /// <summary>Gets the instance.</summary>
+    public static SceneDomain Instance { get; } = new();
+
+    /// <inheritdoc/>
+    public Arbitrary<SceneWalk> Arbitrary => SceneGens.Arbitrary;
+
+    /// <inheritdoc/>
+    public IEnumerable<string> Classes(SceneWalk w)
+    {
+        if (w.Recipe is not { } r)
+        {
+            yield return "scene:stored";
+            yield break;
+        }
+
+        yield return "scene:" + r.Shape;
+        yield return "route:" + r.Route;
+        if (r.Cottage is { } c)
+        {
+            var a = c.ToBlock(System.Numerics.Vector3.Zero);
+            var b = c.ToBlock(new System.Numerics.Vector3(c.Rooms * c.Width, c.Depth, 0));
+            if (Math.Floor(a.X / 192) != Math.Floor(b.X / 192) || Math.Floor(a.Y / 192) != Math.Floor(b.Y / 192))
+            {
+                yield return "place:across-block-line";
+            }
+
+            if (c.WorldX < 192 || c.WorldX > 192 * 0xFE)
+            {
+                yield return "place:map-edge";
+            }
+
+            if (!c.LoadNeighbours)
+            {
+                yield return "place:unloaded-neighbours";
+            }
+
+            if (c.Yaw % (MathF.PI / 2) != 0)
+            {
+                yield return "yaw:oblique";
+            }
+        }
+
+        if (r.Dungeon is { Unloaded: > 0 })
+        {
+            yield return "dungeon:unloaded-tail";
+        }
+    }
+
+    /// <inheritdoc/>
+    public string Primary(SceneWalk w) => Classes(w).Skip(1).FirstOrDefault() ?? "scene:stored";
+}

@@ -1,0 +1,178 @@
+using System.Globalization;
+using System.Numerics;
+using AcPhys.Core;
+using AcPhys.Spec.Scenes;
+
+namespace AcPhys.Spec.Cases;
+
+/// <summary>The route a generated scene walk takes.</summary>
+public enum SceneRoute
+{
+    /// <summary>From outside the front door into the target room.</summary>
+    Enter,
+
+    /// <summary>Into the target room and back out the same way.</summary>
+    EnterAndBack,
+
+    /// <summary>In by the front door, out by the back door.</summary>
+    Through,
+
+    /// <summary>Up to a portal (front door or an inner door) and ±jitter across its plane.</summary>
+    PortalJitter,
+
+    /// <summary>±jitter across a land-cell line next to the cottage.</summary>
+    LineJitter,
+
+    /// <summary>Around the storey above room 0.</summary>
+    Storey,
+
+    /// <summary>Along a dungeon chain from its first cell out of its exit.</summary>
+    DungeonRun,
+
+    /// <summary>Along a dungeon chain and back.</summary>
+    DungeonRunAndBack,
+}
+
+/// <summary>
+/// How a generated scene walk is built: a cottage or a dungeon, a route, a body and a step length. The shrinker
+/// simplifies recipes (fewer rooms, no yaw, no flips, fewer steps) and rebuilds the scene and walk from them.
+/// </summary>
+/// <param name="Cottage">The cottage, or null.</param>
+/// <param name="Dungeon">The dungeon, or null.</param>
+/// <param name="Route">The route.</param>
+/// <param name="Target">Target room (or portal index for jitter).</param>
+/// <param name="Radius">Sphere radius.</param>
+/// <param name="TwoSpheres">Whether a second sphere sits 0.7 m above the first.</param>
+/// <param name="StepMax">Longest step, metres.</param>
+/// <param name="Jitter">Jitter amplitude, metres.</param>
+/// <param name="Take">Steps kept (the shrinker cuts the tail).</param>
+public sealed record SceneRecipe(CottagePlan? Cottage, DungeonPlan? Dungeon, SceneRoute Route, int Target, float Radius, bool TwoSpheres, float StepMax, float Jitter, int Take)
+{
+    /// <summary>Gets the shape class of the scene, for distributions.</summary>
+    public string Shape => Cottage is { } c ? $"cottage-{c.Rooms}{(c.Storey ? "+storey" : string.Empty)}" : $"dungeon-{Dungeon!.Cells}";
+
+    /// <summary>Builds the case.</summary>
+    /// <returns>The scene walk.</returns>
+    public SceneWalk Build()
+    {
+        var scene = Cottage is { } c ? SceneKit.Cottage(c) : SceneKit.Dungeon(Dungeon!);
+        var (startCell, points) = Cottage is { } plan ? CottageRoute(plan) : DungeonRoute(Dungeon!);
+        var steps = new List<Vector2>();
+        float total = 0;
+        for (int i = 1; i < points.Count; i++)
+        {
+            total += Vector2.Distance(new Vector2(points[i].X, points[i].Y), new Vector2(points[i - 1].X, points[i - 1].Y));
+        }
+
+        float stepMax = Math.Min(Radius, Math.Max(StepMax, total / 96)); // at most ~100 steps per walk
+        for (int i = 1; i < points.Count; i++)
+        {
+            var d = new Vector2(points[i].X - points[i - 1].X, points[i].Y - points[i - 1].Y);
+            // A power of two, so that d / n is exact whenever d is (jitter walks return exactly to the line).
+            int n = (int)System.Numerics.BitOperations.RoundUpToPowerOf2((uint)Math.Max(1, (int)MathF.Ceiling(d.Length() / stepMax)));
+            for (int k = 0; k < n; k++)
+            {
+                steps.Add(d / n);
+            }
+        }
+
+        BodySphere[] body = TwoSpheres
+            ? [new BodySphere(new Vector3(0, 0, 0.6f), Radius), new BodySphere(new Vector3(0, 0, 1.3f), Radius)]
+            : [new BodySphere(new Vector3(0, 0, 0.6f), Radius)];
+        var walk = new Walk(startCell, points[0], body, [.. steps.Take(Take)]);
+        if (!startCell.IsEnv)
+        {
+            walk = walk.Normalised();
+        }
+
+        return new SceneWalk(scene, walk) { Recipe = this };
+    }
+
+    /// <inheritdoc/>
+    public override string ToString() =>
+        string.Create(CultureInfo.InvariantCulture, $"{Shape} {Route} target {Target} r={Radius}{(TwoSpheres ? " x2" : string.Empty)} step≤{StepMax} jitter {Jitter} take {Take}") +
+        (Cottage is { } c
+            ? string.Create(CultureInfo.InvariantCulture, $" at ({c.WorldX:R}, {c.WorldY:R}) yaw {c.Yaw} {c.Width}x{c.Depth} flips {c.Flips}{(c.BackDoor ? " back-door" : string.Empty)}{(c.LoadNeighbours ? string.Empty : " neighbours-unloaded")}")
+            : string.Create(CultureInfo.InvariantCulture, $" at ({Dungeon!.WorldX:R}, {Dungeon.WorldY:R}) length {Dungeon.Length} unloaded {Dungeon.Unloaded} flips {Dungeon.Flips}"));
+
+    private (CellId Start, List<Vector3> Points) CottageRoute(CottagePlan p)
+    {
+        float w = p.Width, d = p.Depth;
+        int target = Math.Clamp(Target, 0, p.Rooms - 1);
+        var outside = new Vector3(w / 2, -2.5f, 0);
+        var door = new Vector3(w / 2, 0, 0);
+        var inRoom0 = new Vector3(w / 2, d / 2, 0);
+        var path = new List<Vector3> { outside, door, inRoom0 };
+        for (int i = 1; i <= target; i++)
+        {
+            path.Add(new Vector3((i + 0.5f) * w, d / 2, 0));
+        }
+
+        var start = p.Block.BlockCell;
+        switch (Route)
+        {
+            case SceneRoute.EnterAndBack:
+                path.AddRange(Enumerable.Reverse(path).Skip(1).ToList());
+                break;
+            case SceneRoute.Through:
+                int last = p.Rooms - 1;
+                for (int i = target + 1; i <= last; i++)
+                {
+                    path.Add(new Vector3((i + 0.5f) * w, d / 2, 0));
+                }
+
+                path.Add(new Vector3((last + 0.5f) * w, d + 2.5f, 0));
+                break;
+            case SceneRoute.PortalJitter:
+                // Target 0: the front door; k > 0: the door between rooms k−1 and k.
+                var (approach, plane, normal) = Target % p.Rooms == 0
+                    ? (door - new Vector3(0, 1.5f, 0), door, Vector3.UnitY)
+                    : (new Vector3(((Target % p.Rooms) - 0.5f) * w, d / 2, 0), new Vector3((Target % p.Rooms) * w, d / 2, 0), Vector3.UnitX);
+                path = [approach, plane];
+                if (Target % p.Rooms != 0)
+                {
+                    start = p.RoomId((Target % p.Rooms) - 1); // an inner door: start in the room before it
+                }
+
+                for (int i = 0; i < 6; i++)
+                {
+                    path.Add(plane + (normal * (i % 2 == 0 ? Jitter : -Jitter)));
+                }
+
+                path.Add(plane + (normal * 2f));
+                break;
+            case SceneRoute.LineJitter:
+                // Jitter across the 24 m line nearest the front door, outdoors in front of the cottage.
+                var world = p.ToBlock(outside);
+                float line = MathF.Round(world.X / 24f) * 24f;
+                var local = new Vector3(line, world.Y, 0);
+                path = [local];
+                for (int i = 0; i < 6; i++)
+                {
+                    path.Add(local + new Vector3(i % 2 == 0 ? Jitter : -Jitter, 0, 0));
+                }
+
+                return (start, path);
+            case SceneRoute.Storey:
+                start = p.RoomId(p.Rooms);
+                path = [new Vector3(w / 2, d / 2, CottagePlan.Height), new Vector3(w * 0.25f, d * 0.25f, CottagePlan.Height), new Vector3(w * 0.75f, d * 0.8f, CottagePlan.Height)];
+                break;
+            default:
+                break;
+        }
+
+        return (start, [.. path.Select(p.ToBlock)]);
+    }
+
+    private (CellId Start, List<Vector3> Points) DungeonRoute(DungeonPlan p)
+    {
+        var origin = p.Origin;
+        var path = new List<Vector3> { origin + new Vector3(p.Length / 2, SceneKit.DungeonWidth / 2, 0), origin + new Vector3((p.Cells * p.Length) + 2.5f, SceneKit.DungeonWidth / 2, 0) };
+        if (Route == SceneRoute.DungeonRunAndBack)
+        {
+            path.Add(path[0]);
+        }
+
+        return (p.Block.BlockCell.WithLow(0x100), path);
+    }
+}

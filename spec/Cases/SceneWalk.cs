@@ -1,0 +1,22 @@
+using AcPhys.Spec.Scenes;
+
+namespace AcPhys.Spec.Cases;
+
+/// <summary>
+/// A walk in a scene: the scene, the walk (start cell may be an env cell), and — for generated cases — the recipe it
+/// was built from, which the shrinker simplifies (fewer rooms, no rotation, fewer steps) and rebuilds.
+/// </summary>
+/// <param name="Scene">The scene.</param>
+/// <param name="Walk">The walk; its steps move the body horizontally.</param>
+public sealed record SceneWalk(Scene Scene, Walk Walk)
+{
+    /// <summary>Gets the recipe the case was built from, or null for a stored case.</summary>
+    public SceneRecipe? Recipe { get; init; }
+
+    /// <summary>Gets the state size, for reports of shrunk cases: rooms (env cells, loaded or not), portals, steps.</summary>
+    public string Size => $"{Scene.Cells.Count + Scene.UnloadedCells.Count} rooms, {Scene.PortalCount} portals, {Walk.Steps.Count} steps";
+
+    /// <summary>Formats the case on one line.</summary>
+    /// <returns>The text.</returns>
+    public override string ToString() => $"{Recipe?.ToString() ?? "stored"}; {Scene}; walk {Walk}";
+}

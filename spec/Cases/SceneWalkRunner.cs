@@ -1,0 +1,49 @@
+using System.Numerics;
+using AcPhys.Core;
+using AcPhys.Spec.Adapters;
+
+namespace AcPhys.Spec.Cases;
+
+/// <summary>
+/// Runs a walk in a scene as a client does (as <see cref="WalkRunner"/> on open land): the current cell is threaded
+/// through find_cell_scene and passed as the position's cell; after each answer the position is re-framed into the
+/// containing cell's block (GetBlockOffset); with no answer the client keeps its cell and frame.
+/// </summary>
+public static class SceneWalkRunner
+{
+    /// <summary>Runs the walk.</summary>
+    /// <param name="impl">The implementation.</param>
+    /// <param name="sw">The scene walk.</param>
+    /// <returns>One record for the start query and one per step.</returns>
+    public static IReadOnlyList<WalkStep> Run(ICellPhysics impl, SceneWalk sw)
+    {
+        var walk = sw.Walk;
+        var steps = new List<WalkStep>(walk.Steps.Count + 1);
+        var frame = walk.StartCell;
+        var position = walk.Start;
+        var current = CellId.None;
+        for (int i = 0; i <= walk.Steps.Count; i++)
+        {
+            if (i > 0)
+            {
+                var d = walk.Steps[i - 1];
+                position += new Vector3(d.X, d.Y, 0);
+            }
+
+            double worldX = (192.0 * frame.BlockX) + position.X, worldY = (192.0 * frame.BlockY) + position.Y;
+            var query = new OutdoorCase(frame, walk.SpheresAt(position));
+            var answer = impl.FindCell(sw.Scene, frame, query.Spheres, current);
+            var before = position;
+            if (!answer.Containing.IsNone)
+            {
+                position -= LandDefs.GetBlockOffset(frame, answer.Containing);
+                frame = answer.Containing;
+                current = answer.Containing;
+            }
+
+            steps.Add(new WalkStep(i, query.Cell, before, worldX, worldY, query, answer.Cells, answer.Containing, current));
+        }
+
+        return steps;
+    }
+}

@@ -1,0 +1,521 @@
+using System.Numerics;
+using AcPhys.Core;
+using AcPhys.Spec.Adapters;
+using AcPhys.Spec.Cases;
+using AcPhys.Spec.Scenes;
+
+namespace AcPhys.Spec.Invariants;
+
+/// <summary>Invariants of walks in scenes: interior wins, hysteresis, portal transit, no tunnelling, visibility, and the rest (facts §4, §5).</summary>
+public static class IndoorInvariants
+{
+    /// <summary>Depth, metres, beyond which a point is robustly inside or outside a cell (far above EPS and the BSP's 0.01 only where stated).</summary>
+    public const double Margin = 1e-3;
+
+    /// <summary>INTERIOR-WINS.</summary>
+    public static readonly Invariant<SceneWalk> InteriorWins = new(
+        "INTERIOR-WINS",
+        "When a loaded env cell among the candidates contains sphere 0's centre by more than 1 mm, the containing cell is an env cell, never a land cell.",
+        "facts §4 step 4b",
+        Op.FindCellScene,
+        SceneDomain.Instance,
+        (impl, w) =>
+        {
+            bool applied = false;
+            foreach (var s in SceneWalkRunner.Run(impl, w))
+            {
+                var c = Center(s);
+                var inside = s.Cells.Select(id => SceneOracle.Cell(w.Scene, id)).FirstOrDefault(cell => cell is not null && SceneOracle.IsLoadedEnv(w.Scene, cell.Id) && SceneOracle.Depth(cell, s.Query.Cell, c) > Margin);
+                if (inside is null)
+                {
+                    continue;
+                }
+
+                applied = true;
+                if (!s.Containing.IsEnv)
+                {
+                    return Outcome.Violated($"step {s.Index}: candidate {inside.Id} contains sphere 0's centre but the containing cell is {s.Containing}");
+                }
+            }
+
+            return applied ? Outcome.Holds : Outcome.Vacuous;
+        });
+
+    /// <summary>HYSTERESIS-INDOOR.</summary>
+    public static readonly Invariant<SceneWalk> HysteresisIndoor = new(
+        "HYSTERESIS-INDOOR",
+        "With the current-cell-first pick in a scene, a current cell that is a candidate and still contains sphere 0's centre is kept (a current land cell yields only to an env cell that contains the centre), so jitter at a portal or a line switches at most once per real crossing.",
+        "facts §4 step 4b; acdream's hysteresis",
+        Op.FindCellScene,
+        SceneDomain.Instance,
+        (impl, w) =>
+        {
+            var built = SceneBuild.Build(w.Scene);
+            var trace = SceneWalkRunner.Run(impl, w);
+            bool applied = false;
+            for (int i = 1; i < trace.Count; i++)
+            {
+                var s = trace[i];
+                var prev = trace[i - 1].Current;
+                var c = Center(s);
+                if (prev.IsNone || !s.Cells.Contains(prev) || !SceneOracle.IsLoaded(w.Scene, prev) || !SceneQuery.Contains(built, s.Query.Cell, prev, c, default))
+                {
+                    continue;
+                }
+
+                if (prev.IsLand && s.Cells.Any(id => id.IsEnv && SceneOracle.IsLoadedEnv(w.Scene, id) && SceneQuery.Contains(built, s.Query.Cell, id, c, default)))
+                {
+                    continue;
+                }
+
+                applied = true;
+                if (s.Containing != prev)
+                {
+                    return Outcome.Violated($"step {s.Index}: current {prev} still contains sphere 0's centre but the pick moved to {s.Containing}");
+                }
+            }
+
+            return applied ? Outcome.Holds : Outcome.Vacuous;
+        },
+        PickPolicy.CurrentFirst);
+
+    /// <summary>PORTAL-TRANSIT.</summary>
+    public static readonly Invariant<SceneWalk> PortalTransit = new(
+        "PORTAL-TRANSIT",
+        "With steps no longer than the radius: a centre inside a loaded env cell by 1 mm on two steps running is in that cell after the second (no absorbing outdoor state), except while the position is a land cell framed in another block than the cell (facts §6.11: retail does not re-frame the building test) or the cell is not directly behind a building portal whose building's land cell is a candidate (facts §5.3: a building is reached only through the land cell it is attached to); a centre clear of every cell on two steps running over loaded land, queried from a loaded cell, is in a land cell (no absorbing indoor state); and a load hint for an unloaded cell behind the position's portal appears exactly when a sphere reaches past r + EPS toward it.",
+        "facts §5.1, §5.3, §5.4, §6.9, §6.11",
+        Op.FindCellScene,
+        SceneDomain.Instance,
+        (impl, w) =>
+        {
+            if (!ShortSteps(w))
+            {
+                return Outcome.Vacuous;
+            }
+
+            var trace = SceneWalkRunner.Run(impl, w);
+            bool applied = false;
+            for (int i = 0; i < trace.Count; i++)
+            {
+                var s = trace[i];
+                var c = Center(s);
+                if (LoadHintMismatch(w, s) is string hint)
+                {
+                    return Outcome.Violated($"step {s.Index}: {hint}");
+                }
+
+                if (i == 0)
+                {
+                    continue;
+                }
+
+                var p = trace[i - 1];
+                var pc = Center(p);
+                var here = SceneOracle.Inside(w.Scene, s.Query.Cell, c, Margin).Select(x => x.Id).ToList();
+                var before = SceneOracle.Inside(w.Scene, p.Query.Cell, pc, Margin).Select(x => x.Id).ToList();
+                var both = here.Intersect(before).ToList();
+                if (both.Count > 0)
+                {
+                    if (s.Query.Cell.IsLand && s.Query.Cell.Landblock != both[0].Landblock)
+                    {
+                        continue; // facts §6.11: retail tests the building with the sphere in this block's frame
+                    }
+
+                    if (s.Query.Cell.IsLand && !BehindBuildingPortal(w.Scene, both[0]))
+                    {
+                        continue; // from land only the cells directly behind a building's portals are entered in one query
+                    }
+
+                    if (s.Query.Cell.IsLand && !OwnersReaching(w.Scene, both[0]).Any(s.Cells.Contains))
+                    {
+                        continue; // facts §5.3: land reaches an env cell only through the land cell its building is attached to
+                    }
+
+                    applied = true;
+                    if (!both.Contains(s.Current))
+                    {
+                        return Outcome.Violated($"step {s.Index}: sphere 0's centre has been inside {both[0]} for two steps but the current cell is {s.Current}");
+                    }
+
+                    continue;
+                }
+
+                var (wx, wy) = SceneOracle.World(s.Query.Cell, c);
+                if (w.Scene.UnloadedCells.Count == 0 && SceneOracle.IsLoaded(w.Scene, s.Query.Cell)
+                    && SceneOracle.OutsideAll(w.Scene, s.Query.Cell, c, Margin) && SceneOracle.OutsideAll(w.Scene, p.Query.Cell, pc, Margin)
+                    && SceneOracle.OnMap(wx, wy, 1) && SceneOracle.LandAt(wx, wy) is { } lc && w.Scene.Blocks.Contains(Oracle.CellOf(lc.X, lc.Y).Landblock))
+                {
+                    applied = true;
+                    if (!s.Current.IsLand)
+                    {
+                        return Outcome.Violated($"step {s.Index}: sphere 0's centre has been outside every cell for two steps, over loaded land, but the current cell is {s.Current}");
+                    }
+                }
+            }
+
+            return applied ? Outcome.Holds : Outcome.Vacuous;
+        });
+
+    /// <summary>NO-TUNNEL.</summary>
+    public static readonly Invariant<SceneWalk> NoTunnel = new(
+        "NO-TUNNEL",
+        "With steps no longer than the radius, the current cell changes only to a land cell of the 3 × 3 neighbourhood (from land), a portal-linked env cell (from an env cell), a land cell (from an env cell with an exit), or a cell behind a building portal (from land).",
+        "facts §3.2, §5.1, §5.3",
+        Op.FindCellScene,
+        SceneDomain.Instance,
+        (impl, w) =>
+        {
+            if (!ShortSteps(w))
+            {
+                return Outcome.Vacuous;
+            }
+
+            var trace = SceneWalkRunner.Run(impl, w);
+            bool applied = false;
+            for (int i = 1; i < trace.Count; i++)
+            {
+                CellId a = trace[i - 1].Current, b = trace[i].Current;
+                if (a.IsNone || a == b)
+                {
+                    continue;
+                }
+
+                applied = true;
+                if (!Linked(w.Scene, a, b))
+                {
+                    return Outcome.Violated($"step {trace[i].Index}: the current cell jumped from {a} to {b}, which is neither a neighbour nor behind a portal");
+                }
+            }
+
+            return applied ? Outcome.Holds : Outcome.Vacuous;
+        });
+
+    /// <summary>VISIBILITY.</summary>
+    public static readonly Invariant<SceneWalk> Visibility = new(
+        "VISIBILITY",
+        "For a query from a loaded env cell (LoadCells false), every loaded candidate is that cell or in its VisibleCells; only load hints may be anything else.",
+        "facts §4 step 5, §6.14",
+        Op.FindCellScene,
+        SceneDomain.Instance,
+        (impl, w) =>
+        {
+            bool applied = false;
+            foreach (var s in SceneWalkRunner.Run(impl, w))
+            {
+                var cell = SceneOracle.Cell(w.Scene, s.Query.Cell);
+                if (cell is null || !SceneOracle.IsLoadedEnv(w.Scene, cell.Id))
+                {
+                    continue;
+                }
+
+                applied = true;
+                foreach (var id in s.Cells)
+                {
+                    if (id != cell.Id && !cell.Visible.Contains(id) && SceneOracle.IsLoaded(w.Scene, id))
+                    {
+                        return Outcome.Violated($"step {s.Index}: from {cell.Id}, candidate {id} is loaded but not in its VisibleCells [{string.Join(", ", cell.Visible)}]");
+                    }
+                }
+            }
+
+            return applied ? Outcome.Holds : Outcome.Vacuous;
+        });
+
+    /// <summary>ENTER-EXIT.</summary>
+    public static readonly Invariant<SceneWalk> EnterExit = new(
+        "ENTER-EXIT",
+        "A walk that starts outdoors clear of every cell, goes in and comes back out the same way to the same point ends in the land cell it started in.",
+        "facts §4 (the pick depends on the position and, with current-first, on the path only at ties)",
+        Op.FindCellScene,
+        SceneDomain.Instance,
+        (impl, w) =>
+        {
+            if (w.Recipe is not { Route: SceneRoute.EnterAndBack } || !ShortSteps(w))
+            {
+                return Outcome.Vacuous;
+            }
+
+            var trace = SceneWalkRunner.Run(impl, w);
+            var first = trace[0];
+            var last = trace[^1];
+            var c = Center(first);
+            var (wx, wy) = SceneOracle.World(first.Query.Cell, c);
+            if (last.WorldX != first.WorldX || last.WorldY != first.WorldY || !first.Containing.IsLand
+                || !SceneOracle.OutsideAll(w.Scene, first.Query.Cell, c, 0.05) || !SceneOracle.OnMap(wx, wy, 1)
+                || Math.Abs(wx - (24 * Math.Round(wx / 24))) < Margin || Math.Abs(wy - (24 * Math.Round(wy / 24))) < Margin)
+            {
+                return Outcome.Vacuous;
+            }
+
+            return last.Current == first.Containing
+                ? Outcome.Holds
+                : Outcome.Violated($"started outdoors in {first.Containing}, walked in and back out to the same point, ended in {last.Current}");
+        });
+
+    /// <summary>SCENE-TRANSLATION.</summary>
+    public static readonly Invariant<SceneWalk> SceneTranslation = new(
+        "SCENE-TRANSLATION",
+        "Moving the whole scene and the walk by one landblock changes nothing but the ids: every step's candidates and containing cell are the originals moved by the same block offset (away from the map edge).",
+        "facts §1.3, §5.8 (block frames are relative)",
+        Op.FindCellScene,
+        SceneDomain.Instance,
+        (impl, w) =>
+        {
+            var blocks = w.Scene.Blocks.Concat(w.Scene.UnloadedBlocks).Append(w.Walk.StartCell.Landblock).ToList();
+            int dx = blocks.Max(b => b.X) < 0xFC ? 1 : -1, dy = blocks.Max(b => b.Y) < 0xFC ? 1 : -1;
+            if (blocks.Any(b => b.X + dx < 1 || b.Y + dy < 1 || b.X + dx > 0xFD || b.Y + dy > 0xFD))
+            {
+                return Outcome.Vacuous;
+            }
+
+            var moved = new SceneWalk(w.Scene.Translated(dx, dy), w.Walk with { StartCell = Move(w.Walk.StartCell, dx, dy) });
+            var a = SceneWalkRunner.Run(impl, w);
+            var b = SceneWalkRunner.Run(impl, moved);
+            foreach (var (x, y) in a.Zip(b))
+            {
+                var (wx, wy) = SceneOracle.World(x.Query.Cell, Center(x));
+                if (!SceneOracle.OnMap(wx, wy, 192 + 48))
+                {
+                    return Outcome.Vacuous;
+                }
+
+                var expected = x.Cells.Select(id => Move(id, dx, dy)).ToList();
+                if (!expected.SequenceEqual(y.Cells) || Move(x.Containing, dx, dy) != y.Containing)
+                {
+                    return Outcome.Violated($"step {x.Index}: moved by ({dx}, {dy}) blocks the answer is [{string.Join(", ", y.Cells)}] → {y.Containing}, expected [{string.Join(", ", expected)}] → {Move(x.Containing, dx, dy)}");
+                }
+            }
+
+            return Outcome.Holds;
+        });
+
+    /// <summary>CONTAINING-CONTAINS.</summary>
+    public static readonly Invariant<SceneWalk> ContainingContains = new(
+        "CONTAINING-CONTAINS",
+        "The containing cell contains sphere 0's centre: an env cell's volume within 1 mm, a land cell's closed square within the 1 mm tie band.",
+        "facts §4 step 4b, §5.5",
+        Op.FindCellScene,
+        SceneDomain.Instance,
+        (impl, w) =>
+        {
+            bool applied = false;
+            foreach (var s in SceneWalkRunner.Run(impl, w))
+            {
+                if (s.Containing.IsNone)
+                {
+                    continue;
+                }
+
+                applied = true;
+                var c = Center(s);
+                var (wx, wy) = SceneOracle.World(s.Query.Cell, c);
+                bool ok = s.Containing.IsLand
+                    ? Oracle.IsLandCellOnMap(s.Containing) && SceneOracle.LandDistance(s.Containing, wx, wy) <= Margin
+                    : SceneOracle.Cell(w.Scene, s.Containing) is { } cell && SceneOracle.Depth(cell, s.Query.Cell, c) >= -Margin;
+                if (!ok)
+                {
+                    return Outcome.Violated($"step {s.Index}: containing {s.Containing} does not contain sphere 0's centre (world {wx:R}, {wy:R}, z {c.Z:R})");
+                }
+            }
+
+            return applied ? Outcome.Holds : Outcome.Vacuous;
+        });
+
+    /// <summary>NEVER-NULL.</summary>
+    public static readonly Invariant<SceneWalk> NeverNull = new(
+        "NEVER-NULL",
+        "Every query has a containing cell, except for a documented reason: sphere 0's centre off the map, the position's own cell not loaded, over an unloaded block (unless inside the position's own env cell), in a scene with unloaded cells, or outside the position's env cell after a step longer than the radius (facts §6.9).",
+        "facts §4 step 4b, §6.3, §6.9",
+        Op.FindCellScene,
+        SceneDomain.Instance,
+        (impl, w) =>
+        {
+            bool applied = false;
+            bool shortSteps = ShortSteps(w);
+            foreach (var s in SceneWalkRunner.Run(impl, w))
+            {
+                var c = Center(s);
+                var (wx, wy) = SceneOracle.World(s.Query.Cell, c);
+                bool offMap = !SceneOracle.OnMap(wx, wy, Margin);
+                bool unloadedLand = SceneOracle.LandAt(wx, wy) is not { } lc || !w.Scene.Blocks.Contains(Oracle.CellOf(lc.X, lc.Y).Landblock);
+                bool inOwnCell = SceneOracle.Cell(w.Scene, s.Query.Cell) is { } own && SceneOracle.Depth(own, s.Query.Cell, c) >= Margin;
+                bool positionUnloaded = !SceneOracle.IsLoaded(w.Scene, s.Query.Cell); // facts §4 step 4: no visible cell, no pick
+                if (offMap || positionUnloaded || (unloadedLand && !inOwnCell) || w.Scene.UnloadedCells.Count > 0 || !shortSteps)
+                {
+                    continue;
+                }
+
+                applied = true;
+                if (s.Containing.IsNone)
+                {
+                    return Outcome.Violated($"step {s.Index}: no containing cell for sphere 0's centre at world ({wx:R}, {wy:R}, z {c.Z:R}) from {s.Query.Cell}, over loaded land");
+                }
+            }
+
+            return applied ? Outcome.Holds : Outcome.Vacuous;
+        });
+
+    /// <summary>SCENE-SOUNDNESS.</summary>
+    public static readonly Invariant<SceneWalk> SceneSoundness = new(
+        "SCENE-SOUNDNESS",
+        "Every candidate is within reach of the body: a land cell's square within r + 1 mm of a sphere centre per axis, a loaded env cell the position's own or within r + 0.01 + 1 mm of a sphere, an unloaded env cell the full id of a portal target of a loaded candidate; none twice (the array is reset per call).",
+        "facts §3.2, §4 step 1, §5.1, §5.3, §5.7, §6.13",
+        Op.FindCellScene,
+        SceneDomain.Instance,
+        (impl, w) =>
+        {
+            foreach (var s in SceneWalkRunner.Run(impl, w))
+            {
+                if (Unreachable(w.Scene, s) is string why)
+                {
+                    return Outcome.Violated($"step {s.Index}: {why}");
+                }
+            }
+
+            return Outcome.Holds;
+        });
+
+    /// <summary>Gets every scene invariant.</summary>
+    public static IReadOnlyList<Invariant<SceneWalk>> All { get; } =
+        [InteriorWins, HysteresisIndoor, PortalTransit, NoTunnel, Visibility, EnterExit, SceneTranslation, ContainingContains, NeverNull, SceneSoundness];
+
+    private static Vector3 Center(WalkStep s) => s.Query.Spheres[0].Center;
+
+    private static string? Unreachable(Scene scene, WalkStep s)
+    {
+        if (s.Cells.Distinct().Count() != s.Cells.Count)
+        {
+            return $"a candidate appears twice in [{string.Join(", ", s.Cells)}]";
+        }
+
+        foreach (var id in s.Cells)
+        {
+            bool near;
+            if (id.IsLand)
+            {
+                near = s.Query.Spheres.Any(sp =>
+                {
+                    var (x, y) = SceneOracle.World(s.Query.Cell, sp.Center);
+                    return SceneOracle.LandDistance(id, x, y) <= sp.Radius + Margin;
+                });
+            }
+            else if (SceneOracle.Cell(scene, id) is { } cell && SceneOracle.IsLoadedEnv(scene, id))
+            {
+                near = id == s.Query.Cell || s.Query.Spheres.Any(sp => SceneOracle.Depth(cell, s.Query.Cell, sp.Center) >= -(sp.Radius + 0.01 + Margin));
+            }
+            else
+            {
+                near = id == s.Query.Cell || s.Cells.Any(c => SceneOracle.Cell(scene, c) is { } owner && owner.Portals.Any(p => !p.IsExit && owner.Id.WithLow(p.Other) == id));
+            }
+
+            if (!near)
+            {
+                return $"candidate {id} is out of the body's reach (query from {s.Query.Cell})";
+            }
+        }
+
+        return null;
+    }
+
+    private static bool ShortSteps(SceneWalk w) => w.Walk.Body.Count > 0 && w.Walk.Steps.All(d => d.Length() <= w.Walk.Body[0].Radius);
+
+    private static CellId Move(CellId id, int dx, int dy) => id.IsNone ? id : new CellId((byte)(id.BlockX + dx), (byte)(id.BlockY + dy), id.Low);
+
+    // The land cells owning a building from whose portals the target is reachable through cell portals.
+    private static IEnumerable<CellId> OwnersReaching(Scene scene, CellId target) =>
+        scene.Buildings.Where(b => Reaches(scene, b, target)).Select(b => new Building(b.Block, b.Origin, []).OwningCell()).Where(o => !o.IsNone);
+
+    // The env cells a building's portals lead to, and every cell portal-linked to them (the transit closure).
+    private static bool Reaches(Scene scene, SceneBuilding building, CellId target)
+    {
+        var seen = new HashSet<CellId>(building.Portals.Select(p => building.Block.BlockCell.WithLow(p.Cell)));
+        var queue = new Queue<CellId>(seen);
+        while (queue.Count > 0)
+        {
+            var id = queue.Dequeue();
+            if (id == target)
+            {
+                return true;
+            }
+
+            foreach (var p in SceneOracle.Cell(scene, id)?.Portals ?? [])
+            {
+                if (!p.IsExit && seen.Add(id.WithLow(p.Other)))
+                {
+                    queue.Enqueue(id.WithLow(p.Other));
+                }
+            }
+        }
+
+        return false;
+    }
+
+    private static bool BehindBuildingPortal(Scene scene, CellId cell) =>
+        scene.Buildings.Any(b => b.Block == cell.Landblock && b.Portals.Any(p => p.Cell == cell.Low));
+
+    private static bool Linked(Scene scene, CellId a, CellId b)
+    {
+        if (a.IsLand && b.IsLand)
+        {
+            var (ax, ay) = Oracle.LcoordOf(a);
+            var (bx, by) = Oracle.LcoordOf(b);
+            return Math.Abs(ax - bx) <= 1 && Math.Abs(ay - by) <= 1;
+        }
+
+        if (a.IsEnv && b.IsLand)
+        {
+            return SceneOracle.Cell(scene, a) is { } cell && cell.Portals.Any(p => p.IsExit);
+        }
+
+        if (a.IsLand && b.IsEnv)
+        {
+            return scene.Buildings.Any(bl => bl.Block == b.Landblock && bl.Portals.Any(p => p.Cell == b.Low));
+        }
+
+        return a.Landblock == b.Landblock
+            && ((SceneOracle.Cell(scene, a)?.Portals.Any(p => p.Other == b.Low) ?? false) || (SceneOracle.Cell(scene, b)?.Portals.Any(p => p.Other == a.Low) ?? false));
+    }
+
+    // The position's own portals into unloaded cells: a hint iff some sphere reaches past r + EPS toward the other side,
+    // the side read from the geometry (the cell's box centre), not from PortalSide.
+    private static string? LoadHintMismatch(SceneWalk w, WalkStep s)
+    {
+        var cell = SceneOracle.Cell(w.Scene, s.Query.Cell);
+        if (cell is null || !SceneOracle.IsLoadedEnv(w.Scene, cell.Id))
+        {
+            return null;
+        }
+
+        var frame = new Frame(cell.Origin, cell.Rotation);
+        var bounds = cell.Pieces[0].ToConvex().Bounds;
+        var middle = (bounds.Min + bounds.Max) / 2;
+        foreach (var portal in cell.Portals)
+        {
+            var other = cell.Id.WithLow(portal.Other);
+            if (portal.IsExit || !w.Scene.UnloadedCells.Contains(other))
+            {
+                continue;
+            }
+
+            var plane = new CellPlane(Vector3.Normalize(portal.Plane.Normal), portal.Plane.D / portal.Plane.Normal.Length());
+            double own = Math.Sign(plane.Distance(middle));
+            bool reaches = false, tie = false;
+            foreach (var sphere in s.Query.Spheres)
+            {
+                double toward = -own * plane.Distance(frame.GlobalToLocal(sphere.Center));
+                double slack = toward + sphere.Radius + LandDefs.Epsilon;
+                tie |= Math.Abs(slack) < Margin;
+                reaches |= slack > 0;
+            }
+
+            if (!tie && reaches != s.Cells.Contains(other))
+            {
+                return reaches
+                    ? $"a sphere reaches past the portal of {cell.Id} toward unloaded {other} but no load hint was given"
+                    : $"load hint {other} given although every sphere is wholly on {cell.Id}'s side of the portal";
+            }
+        }
+
+        return null;
+    }
+}
