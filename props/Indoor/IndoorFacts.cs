@@ -150,6 +150,35 @@ public sealed class IndoorFacts
         Assert.Contains(Room0, array.ToIdArray());
     }
 
+    [Fact(DisplayName = "facts §7 #10: ACE resolves a portal's neighbour through VisibleCells only; retail through every loaded cell")]
+    public void AceNeighbourViaVisibleCells()
+    {
+        var scene = SceneKit.Cottage(Plan);
+        var blind = scene with { Cells = [.. scene.Cells.Select(c => c with { Visible = [] })] };
+        var array = new CellArray();
+        var ace = CellQueryOptions.RetailTransition with { Fidelity = new IndoorFidelity(AceNeighbourViaVisibleCells: true) };
+        Query(array, Room0, new Vector3(56.3f, 53, 0.5f), options: ace, scene: blind);
+        Assert.Contains(new CellEntry(Room1, false), Entries(array)); // a load hint: room 1 is not in room 0's list
+        Query(array, Room0, new Vector3(56.3f, 53, 0.5f), options: CellQueryOptions.RetailTransition, scene: blind);
+        Assert.Contains(new CellEntry(Room1, true), Entries(array));
+    }
+
+    [Fact(DisplayName = "facts §7 #12: an exit is flag 4 in retail, OtherCellId 0xFFFF in ACE")]
+    public void OutsideDetection()
+    {
+        // Room 0 with one portal: OtherCellId 0xFFFF but flag 4 clear (PortalSide true, the owning cell on the negative side).
+        var portal = new CellPortal(CellPortal.FlagsFor(portalSide: true, outside: false), 0, CellPortal.Outside, 0xFFFF, new CellPlane(-Vector3.UnitY, 0));
+        var env = new EnvCell(Room0, new Frame(new Vector3(50, 50, 0), System.Numerics.Quaternion.Identity), new CellBsp([ConvexPiece.FromBox(Vector3.Zero, new Vector3(6, 6, 3))]), [portal], []);
+        var scene = new CellScene([new LandblockId(0xA9B4)], [env], []);
+        var array = new CellArray();
+        Sphere[] spheres = [new Sphere(new Vector3(53, 50.2f, 0.5f), 0.5f)];
+        SceneQuery.FindCellList(array, scene, Room0, spheres, default, CellQueryOptions.RetailTransition);
+        Assert.Equal([Room0, new CellId(0xA9B4FFFF)], array.ToIdArray()); // retail: not an exit; block | 0xFFFF resolves to nothing: a load hint
+        var ace = CellQueryOptions.RetailTransition with { Fidelity = new IndoorFidelity(AceOutsideByCellId: true) };
+        SceneQuery.FindCellList(array, scene, Room0, spheres, default, ace);
+        Assert.Contains(Owner, array.ToIdArray()); // ACE: an exit, the outdoor cells are added
+    }
+
     [Fact(DisplayName = "facts §7 #7: ACE's early return after an interior pick skips the filter; retail filters")]
     public void AceEarlyReturnSkipsFilter()
     {

@@ -19,7 +19,8 @@ public sealed class ReferenceAdapter(PickPolicy pick = PickPolicy.Retail, PartsF
 
     /// <inheritdoc/>
     public string Name => (pick == PickPolicy.Retail ? "reference" : "reference(current-first)")
-        + (partsFidelity.SameBlockGuard ? "+ace-same-block-guard" : string.Empty) + (partsFidelity.EveryPartAnchors ? "+ace-every-part-anchors" : string.Empty);
+        + (partsFidelity.SameBlockGuard ? "+ace-same-block-guard" : string.Empty) + (partsFidelity.EveryPartAnchors ? "+ace-every-part-anchors" : string.Empty)
+        + (Indoor == default ? string.Empty : "+indoor" + Indoor.ToString()[nameof(IndoorFidelity).Length..]) + (Volumes == VolumeMode.Aabb ? "+aabb" : string.Empty);
 
     /// <inheritdoc/>
     public Op Ops => Op.All | Op.FindCellScene;
