@@ -40,6 +40,7 @@ public static class CatalogueRunner
         var classes = new Dictionary<string, int>();
         int generated = 0, applicable = 0;
         bool failing = false;
+        TimeSpan? timeToFailure = null;
         AdapterFailureException? adapterFailure = null;
 
         var domain = invariant.Domain;
@@ -70,6 +71,10 @@ public static class CatalogueRunner
                 }
 
                 failing = outcome.IsViolation;
+                if (failing)
+                {
+                    timeToFailure = stopwatch.Elapsed;
+                }
             }
 
             return (!outcome.IsViolation).Label(outcome.Message ?? invariant.Id)
@@ -119,6 +124,7 @@ public static class CatalogueRunner
             return result with
             {
                 Status = ResultStatus.Failed,
+                TimeToFailure = timeToFailure,
                 Violation = shrunk ?? original,
                 Original = original,
                 Replay = new Seed(failed.Item6.Seed, failed.Item6.Gamma, failed.Item7),
