@@ -63,6 +63,14 @@ internal static class BiteCommand
             throw new UsageException($"--seeds must be at least 1 (got {seeds})");
         }
 
+        foreach (var path in new[] { markdownPath, jsonPath })
+        {
+            if (!string.IsNullOrEmpty(path) && Directory.Exists(path))
+            {
+                throw new UsageException($"cannot write {path}: it is a directory");
+            }
+        }
+
         IReadOnlyList<KnownBug> catalogue;
         try
         {

@@ -98,6 +98,20 @@ public sealed class KnownBugCatalogueTests(ITestOutputHelper output)
         Assert.Equal("not-caught", json.RootElement.GetProperty("bugs")[0].GetProperty("cells").GetProperty("ADJUST-RANGE").GetProperty("verdict").GetString());
     }
 
+    [Fact(DisplayName = "BITE-STATEFUL: a stateful fault (no-reset) is caught under each of 5 bite seeds with a violation, never reported as a tool error")]
+    public void StatefulFaultIsCaughtUnderEverySeed()
+    {
+        var impl = PlantedFaults.Create(PlantedFaults.NoReset.Id);
+        var soundness = InvariantCatalogue.Find("SOUNDNESS")!;
+        for (ulong k = 0; k < 5; k++)
+        {
+            var result = soundness.Run(impl, Profile.Pr.CasesPerInvariant, Seed.Derive(Profile.Pr.BaseSeed!.Value + k, soundness.Id));
+            Assert.Equal(ResultStatus.Failed, result.Status);
+            Assert.NotNull(result.Violation);
+            Assert.NotNull(result.TimeToFailure);
+        }
+    }
+
     [KnownBugsPendingFact(DisplayName = "BITE-PENDING: every catalogue entry has its planted fault (skipped, naming the entries, while some wait for another branch)")]
     public void NoEntryWaitsForAFault() =>
         Assert.All(KnownBugCatalogue.All, b => Assert.True(b.IsAvailable, $"{b.Id}: {b.NotAvailableReason}"));

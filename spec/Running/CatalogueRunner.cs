@@ -41,6 +41,7 @@ public static class CatalogueRunner
         int generated = 0, applicable = 0;
         bool failing = false;
         TimeSpan? timeToFailure = null;
+        Violation? firstSeen = null;
         AdapterFailureException? adapterFailure = null;
 
         var domain = invariant.Domain;
@@ -74,6 +75,7 @@ public static class CatalogueRunner
                 if (failing)
                 {
                     timeToFailure = stopwatch.Elapsed;
+                    firstSeen = new Violation(invariant.Id, outcome.Message ?? "violated", c?.ToString() ?? string.Empty) { Case = c };
                 }
             }
 
@@ -114,6 +116,13 @@ public static class CatalogueRunner
         {
             var original = failed.Item2.Head is TCase o ? ViolationOf(invariant, impl, o) : null;
             var shrunk = failed.Item3.Head is TCase s ? ViolationOf(invariant, impl, s) : null;
+            if (original is null && shrunk is null && firstSeen is not null)
+            {
+                // A violation was seen but does not come back on re-check: the implementation keeps state between
+                // calls (e.g. a cell array never reset) or is non-deterministic. That is a finding, reported as seen.
+                original = firstSeen with { Message = firstSeen.Message + " (not reproducible on re-check: the implementation keeps state between calls or is non-deterministic)" };
+            }
+
             if (original is null && shrunk is null)
             {
                 // The property itself threw (a tool defect, not an implementation finding): say so, never an empty violation.
