@@ -40,6 +40,8 @@ public static class CatalogueRunner
         var classes = new Dictionary<string, int>();
         int generated = 0, applicable = 0;
         bool failing = false;
+        TimeSpan? timeToFailure = null;
+        Violation? firstSeen = null;
         AdapterFailureException? adapterFailure = null;
 
         var domain = invariant.Domain;
@@ -70,6 +72,11 @@ public static class CatalogueRunner
                 }
 
                 failing = outcome.IsViolation;
+                if (failing)
+                {
+                    timeToFailure = stopwatch.Elapsed;
+                    firstSeen = new Violation(invariant.Id, outcome.Message ?? "violated", c?.ToString() ?? string.Empty) { Case = c };
+                }
             }
 
             return (!outcome.IsViolation).Label(outcome.Message ?? invariant.Id)
@@ -109,6 +116,13 @@ public static class CatalogueRunner
         {
             var original = failed.Item2.Head is TCase o ? ViolationOf(invariant, impl, o) : null;
             var shrunk = failed.Item3.Head is TCase s ? ViolationOf(invariant, impl, s) : null;
+            if (original is null && shrunk is null && firstSeen is not null)
+            {
+                // A violation was seen but does not come back on re-check: the implementation keeps state between
+                // calls (e.g. a cell array never reset) or is non-deterministic. That is a finding, reported as seen.
+                original = firstSeen with { Message = firstSeen.Message + " (not reproducible on re-check: the implementation keeps state between calls or is non-deterministic)" };
+            }
+
             if (original is null && shrunk is null)
             {
                 // The property itself threw (a tool defect, not an implementation finding): say so, never an empty violation.
@@ -119,6 +133,7 @@ public static class CatalogueRunner
             return result with
             {
                 Status = ResultStatus.Failed,
+                TimeToFailure = timeToFailure,
                 Violation = shrunk ?? original,
                 Original = original,
                 Replay = new Seed(failed.Item6.Seed, failed.Item6.Gamma, failed.Item7),

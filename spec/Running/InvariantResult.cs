@@ -51,6 +51,9 @@ public sealed record InvariantResult
     /// <summary>Gets why the invariant was not tested.</summary>
     public string? NotTestedReason { get; init; }
 
+    /// <summary>Gets the time from the start of the run to the first violating case (before shrinking), when failed by a generated case.</summary>
+    public TimeSpan? TimeToFailure { get; init; }
+
     /// <summary>Gets the time spent.</summary>
     public TimeSpan Elapsed { get; init; }
 }
