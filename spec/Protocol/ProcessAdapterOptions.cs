@@ -1,0 +1,14 @@
+namespace AcPhys.Spec.Protocol;
+
+/// <summary>How a <see cref="ProcessAdapter"/> runs its child.</summary>
+public sealed record ProcessAdapterOptions
+{
+    /// <summary>Gets the default per-request timeout.</summary>
+    public static TimeSpan DefaultTimeout { get; } = TimeSpan.FromSeconds(10);
+
+    /// <summary>Gets the per-request timeout (the handshake included).</summary>
+    public TimeSpan Timeout { get; init; } = DefaultTimeout;
+
+    /// <summary>Gets where each line the child writes to stderr goes (null: kept only for error messages).</summary>
+    public Action<string>? StderrSink { get; init; }
+}
