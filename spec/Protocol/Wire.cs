@@ -18,7 +18,7 @@ public static class Wire
     /// <summary>The protocol version this code speaks.</summary>
     public const int Version = 1;
 
-    private static readonly JsonWriterOptions WriterOptions = new() { Indented = false, SkipValidation = false };
+    private static readonly JsonWriterOptions WriterOptions = new() { Indented = false, Encoder = System.Text.Encodings.Web.JavaScriptEncoder.UnsafeRelaxedJsonEscaping };
 
     /// <summary>Builds one message line (no newline) with the fields <paramref name="fields"/> writes.</summary>
     /// <param name="fields">Writes the object's properties.</param>
