@@ -20,6 +20,7 @@ internal static class Program
             ReplayCommand.Create(),
             RenderCommand.Create(),
             ServeCommand.Create(),
+            DiffCommand.Create(),
         };
 
         var parse = root.Parse(args);
