@@ -86,10 +86,18 @@ internal static class DiffCommand
             var stopwatch = Stopwatch.StartNew();
             var table = new Table().AddColumn("Check").AddColumn(new TableColumn("Inputs").RightAligned()).AddColumn("Verdict").AddColumn(new TableColumn("Time").RightAligned());
             var results = new List<InvariantResult>();
-            foreach (var check in checks)
+            ProgressBars.Run($"diff {impl.Name}", checks.Count, advance =>
             {
-                var result = check.Run(impl, cases, fixedSeed ?? Seed.Derive(Spec.Running.Profile.Pr.BaseSeed!.Value, check.Id));
-                results.Add(result);
+                foreach (var check in checks)
+                {
+                    results.Add(check.Run(impl, cases, fixedSeed ?? Seed.Derive(Spec.Running.Profile.Pr.BaseSeed!.Value, check.Id)));
+                    advance(check.Id);
+                }
+            },
+            enabled: !quiet);
+            foreach (var result in results)
+            {
+                var check = result.Invariant;
                 string verdict = result.Status switch
                 {
                     ResultStatus.Passed => "same",

@@ -6,7 +6,6 @@ using AcPhys.Spec.Adapters;
 using AcPhys.Spec.Faults;
 using AcPhys.Spec.Invariants;
 using AcPhys.Spec.Running;
-using Spectre.Console;
 
 namespace AcPhys.Cli.Commands;
 
@@ -180,15 +179,11 @@ internal static class VerifyCommand
         }
 
         int total = only?.Count ?? InvariantCatalogue.All.Count;
-        int done = 0;
         IReadOnlyList<InvariantResult> results = [];
-        Terminal.Err.Status().Start($"checking {total} invariants against {impl.Name} ...", context =>
+        ProgressBars.Run($"verify {impl.Name}", total, advance =>
         {
             results = CatalogueRunner.RunCatalogue(impl, settings.Profile, only, settings.FixedSeed, result =>
-            {
-                done++;
-                context.Status(Markup.Escape($"checked {done}/{total} invariants (last: {result.Invariant.Id} {VerifyReport.Verdict(result.Status)}) ..."));
-            });
+                advance($"{result.Invariant.Id} {VerifyReport.Verdict(result.Status)}"));
         });
         return results;
     }
