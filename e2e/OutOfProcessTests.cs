@@ -73,6 +73,7 @@ public sealed class OutOfProcessTests
         var run = Acphys.Run(["verify", "--impl-cmd", Acphys.PythonExample + " --ops lcoord_to_gid,gid_to_lcoord", "--cases", "300"]);
         Assert.True(run.Exit == 0, run.ToString());
         Assert.Contains("verify: 21 invariants, 1 passed, 0 failed, 20 not tested", run.Out, StringComparison.Ordinal);
+        Assert.Contains("capabilities: offers gid_to_lcoord, lcoord_to_gid; lacks blockid_to_lcoord, inbound_valid_cellid,", run.Out, StringComparison.Ordinal);
         Assert.Contains("NOT TESTED COVERAGE: implementation lacks outside_cells", run.Out, StringComparison.Ordinal);
         Assert.Contains("NOT TESTED ADJUST-RANGE: implementation lacks adjust_to_outside", run.Out, StringComparison.Ordinal);
     }
