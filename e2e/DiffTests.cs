@@ -8,7 +8,7 @@ public sealed class DiffTests
     [RequiresPythonFact]
     public void PythonExampleAnswersLikeTheReference()
     {
-        var run = Acphys.Run(["diff", "--impl-cmd", Acphys.PythonExample, "--cases", "300", "-o", Directory.CreateTempSubdirectory("acphys-diff-").FullName]);
+        var run = Acphys.Run(["diff", "--impl-cmd", Acphys.PythonExample, "--cases", "300", "--timeout", "60", "-o", Directory.CreateTempSubdirectory("acphys-diff-").FullName]);
         Assert.True(run.Exit == 0, run.ToString());
         Assert.Contains("diff: 5 checks, 4 same, 0 differ, 1 not compared", run.Out, StringComparison.Ordinal); // no outside_cells_parts
     }
@@ -17,7 +17,7 @@ public sealed class DiffTests
     public void SeededBugFirstDivergenceIsAShrunkWalkFileWithBothAnswers()
     {
         string dir = Directory.CreateTempSubdirectory("acphys-diff-").FullName;
-        var run = Acphys.Run(["diff", "--impl-cmd", Acphys.PythonExample + " --bug clamp-106", "--only", "DIFF-WALK", "--cases", "300", "-o", dir]);
+        var run = Acphys.Run(["diff", "--impl-cmd", Acphys.PythonExample + " --bug clamp-106", "--only", "DIFF-WALK", "--cases", "300", "--timeout", "60", "-o", dir]);
         Assert.True(run.Exit == 1, run.ToString());
         Assert.Contains("DIFFERS DIFF-WALK: python-example+clamp-106 vs reference", run.Out, StringComparison.Ordinal);
 
@@ -30,7 +30,7 @@ public sealed class DiffTests
         // The walk file replays: on the reference it holds, on the buggy implementation an invariant breaks.
         var onReference = Acphys.Run(["replay", walkFile]);
         Assert.True(onReference.Exit == 0, onReference.ToString());
-        var onBug = Acphys.Run(["replay", walkFile, "--impl-cmd", Acphys.PythonExample + " --bug clamp-106"]);
+        var onBug = Acphys.Run(["replay", walkFile, "--impl-cmd", Acphys.PythonExample + " --bug clamp-106", "--timeout", "60"]);
         Assert.True(onBug.Exit == 1, onBug.ToString());
     }
 

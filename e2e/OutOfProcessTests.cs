@@ -12,7 +12,7 @@ public sealed class OutOfProcessTests
     public void ServedReferencePassesEveryTestedInvariant()
     {
         // The whole catalogue over the process boundary: the wire encoding loses nothing the invariants see.
-        var run = Acphys.Run(["verify", "--impl-cmd", Acphys.ServeCommand, "--cases", "150"]);
+        var run = Acphys.Run(["verify", "--impl-cmd", Acphys.ServeCommand, "--cases", "150", "--timeout", "60"]);
         Assert.True(run.Exit == 0, run.ToString());
         Assert.Contains(" 0 failed", run.Out, StringComparison.Ordinal);
         Assert.Contains("NOT TESTED HYSTERESIS", run.Out, StringComparison.Ordinal); // serve declares the retail pick
@@ -21,7 +21,7 @@ public sealed class OutOfProcessTests
     [Fact]
     public void ServedPlantedFaultIsCaughtWithShrunkWalkAndReplayLine()
     {
-        var run = Acphys.Run(["verify", "--impl-cmd", Acphys.ServeCommand + " --fault clamp-106", "--only", "NO-BOUNDARY-FREEZE", "--cases", "300"]);
+        var run = Acphys.Run(["verify", "--impl-cmd", Acphys.ServeCommand + " --fault clamp-106", "--only", "NO-BOUNDARY-FREEZE", "--cases", "300", "--timeout", "60"]);
         Assert.True(run.Exit == 1, run.ToString());
         Assert.Contains("FAIL NO-BOUNDARY-FREEZE on reference+clamp-106", run.Out, StringComparison.Ordinal);
         string replay = Line(run.Out, "  replay     acphys verify");
@@ -32,7 +32,7 @@ public sealed class OutOfProcessTests
     [RequiresPythonFact]
     public void PythonExamplePassesWithNoFalseAlarm()
     {
-        var run = Acphys.Run(["verify", "--impl-cmd", Acphys.PythonExample, "--cases", "400"]);
+        var run = Acphys.Run(["verify", "--impl-cmd", Acphys.PythonExample, "--cases", "400", "--timeout", "60"]);
         Assert.True(run.Exit == 0, run.ToString());
         Assert.Contains("against python-example;", run.Out, StringComparison.Ordinal);
         Assert.Contains("verify: 21 invariants, 18 passed, 0 failed, 3 not tested", run.Out, StringComparison.Ordinal);
@@ -43,7 +43,7 @@ public sealed class OutOfProcessTests
     public void PythonClampBugIsCaughtThroughTheProtocolWithAShrunkWalk()
     {
         var run = Acphys.Run(
-            ["verify", "--impl-cmd", Acphys.PythonExample, "--only", "NO-BOUNDARY-FREEZE", "--cases", "500"],
+            ["verify", "--impl-cmd", Acphys.PythonExample, "--only", "NO-BOUNDARY-FREEZE", "--cases", "500", "--timeout", "60"],
             new Dictionary<string, string> { ["ACPHYS_PY_BUG"] = "clamp-106" });
         Assert.True(run.Exit == 1, run.ToString());
         Assert.Contains("FAIL NO-BOUNDARY-FREEZE on python-example+clamp-106", run.Out, StringComparison.Ordinal);
@@ -60,7 +60,7 @@ public sealed class OutOfProcessTests
     [RequiresPythonFact]
     public void PythonTruncationBugIsCaughtWithAShrunkCase()
     {
-        var run = Acphys.Run(["verify", "--impl-cmd", Acphys.PythonExample + " --bug trunc-floor", "--only", "ADJUST-RANGE,OUTSIDE-LCOORD-GEOMETRY", "--cases", "500"]);
+        var run = Acphys.Run(["verify", "--impl-cmd", Acphys.PythonExample + " --bug trunc-floor", "--only", "ADJUST-RANGE,OUTSIDE-LCOORD-GEOMETRY", "--cases", "500", "--timeout", "60"]);
         Assert.True(run.Exit == 1, run.ToString());
         Assert.Contains("FAIL ADJUST-RANGE on python-example+trunc-floor", run.Out, StringComparison.Ordinal);
         Assert.Contains("FAIL OUTSIDE-LCOORD-GEOMETRY on python-example+trunc-floor", run.Out, StringComparison.Ordinal);
@@ -70,7 +70,7 @@ public sealed class OutOfProcessTests
     [RequiresPythonFact]
     public void PartialImplementationIsTestedOnWhatItHasAndTheRestIsListed()
     {
-        var run = Acphys.Run(["verify", "--impl-cmd", Acphys.PythonExample + " --ops lcoord_to_gid,gid_to_lcoord", "--cases", "300"]);
+        var run = Acphys.Run(["verify", "--impl-cmd", Acphys.PythonExample + " --ops lcoord_to_gid,gid_to_lcoord", "--cases", "300", "--timeout", "60"]);
         Assert.True(run.Exit == 0, run.ToString());
         Assert.Contains("verify: 21 invariants, 1 passed, 0 failed, 20 not tested", run.Out, StringComparison.Ordinal);
         Assert.Contains("capabilities: offers gid_to_lcoord, lcoord_to_gid; lacks blockid_to_lcoord, inbound_valid_cellid,", run.Out, StringComparison.Ordinal);
@@ -111,7 +111,7 @@ public sealed class OutOfProcessTests
     [Fact]
     public void GarbageAnswerIsExit2NotAViolation()
     {
-        var run = Acphys.Run(["verify", "--impl-cmd", Acphys.Script("garbage-answer.sh"), "--only", "LCOORD-ROUNDTRIP"]);
+        var run = Acphys.Run(["verify", "--impl-cmd", Acphys.Script("garbage-answer.sh"), "--only", "LCOORD-ROUNDTRIP", "--timeout", "60"]);
         Assert.True(run.Exit == 2, run.ToString());
         Assert.Contains("answered 'gid_to_lcoord' with something that is not protocol v1: missing field \"ok\"", run.Err, StringComparison.Ordinal);
     }

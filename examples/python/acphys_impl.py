@@ -310,7 +310,10 @@ def main():
 
     print("acphys_impl.py: protocol %d, ops %s%s" % (PROTOCOL, ",".join(ops), ", seeded bug " + BUG if BUG else ""),
           file=sys.stderr, flush=True)
-    for line in sys.stdin:
+    while True:
+        line = sys.stdin.readline()      # one line at a time: never wait for more input than one request
+        if not line:
+            break                        # end of input: the tool is done
         if not line.strip():
             continue
         try:

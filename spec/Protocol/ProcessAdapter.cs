@@ -59,7 +59,7 @@ public sealed class ProcessAdapter : ICellPhysics, IDisposable
                     w.WriteNumber("protocol", Wire.Version);
                 }),
                 "hello",
-                options.Timeout);
+                options.Timeout > options.HandshakeTimeout ? options.Timeout : options.HandshakeTimeout);
             using var doc = ParseAnswer(answer, "hello", commandLine);
             var hello = doc.RootElement;
             if (hello.TryGetProperty("error", out var error))
