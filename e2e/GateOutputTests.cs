@@ -35,6 +35,8 @@ public sealed class GateOutputTests
         Assert.Contains("| `NO-BOUNDARY-FREEZE` | ❌ **FAIL** |", md, StringComparison.Ordinal);
         Assert.Contains("| `LCOORD-ROUNDTRIP` | ✅ pass |", md, StringComparison.Ordinal);
         Assert.Contains("Minimised walk:", md, StringComparison.Ordinal);
+        Assert.Contains("The walk on reference+clamp-106:", md, StringComparison.Ordinal);
+        Assert.Contains(" | none | [] |", md, StringComparison.Ordinal); // the step where the clamped port freezes
         Assert.Contains("Seed: `", md, StringComparison.Ordinal);
         Assert.Contains("acphys verify --only NO-BOUNDARY-FREEZE --cases 300 --seed ", md, StringComparison.Ordinal);
         Assert.Contains("- `HYSTERESIS`: applies to the current-first pick", md, StringComparison.Ordinal);

@@ -7,7 +7,8 @@ namespace AcPhys.Cli.Verify;
 /// <param name="Confirmed">Whether re-running it reproduced the same shrunk case.</param>
 /// <param name="CaseFile">The shrunk case written as a corpus file, if it could be.</param>
 /// <param name="CaseReplay">The replay command line for that file.</param>
-internal sealed record FailureDetail(string ReplayLine, bool Confirmed, string? CaseFile, string? CaseReplay);
+/// <param name="WalkSteps">For a walk: one row per step as the implementation answered it (step, frame, position, containing, cells).</param>
+internal sealed record FailureDetail(string ReplayLine, bool Confirmed, string? CaseFile, string? CaseReplay, IReadOnlyList<string[]>? WalkSteps = null);
 
 /// <summary>One finished <c>verify</c> run, as the PR-gate outputs (JUnit XML, markdown summary) see it.</summary>
 /// <param name="ImplName">The implementation's name.</param>

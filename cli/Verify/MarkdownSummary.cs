@@ -41,6 +41,16 @@ internal static class MarkdownSummary
                 md.Append(walk ? "Minimised walk:\n\n" : "Minimised case:\n\n");
                 Fence(md, v.CaseText);
                 md.Append("Message: ").Append(Inline(v.Message)).Append("\n\n");
+                if (detail?.WalkSteps is { Count: > 0 } steps)
+                {
+                    md.Append($"The walk on {Cell(run.ImplName)}:\n\n| step | frame | position (block frame) | containing | cells |\n|---:|---|---|---|---|\n");
+                    foreach (var row in steps)
+                    {
+                        md.Append("| ").Append(string.Join(" | ", row.Select(Cell))).Append(" |\n");
+                    }
+
+                    md.Append('\n');
+                }
             }
 
             md.Append($"Seed: `{r.Seed}`\n\nReplay:\n\n");

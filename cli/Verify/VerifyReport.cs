@@ -1,4 +1,5 @@
 using AcPhys.Spec.Adapters;
+using AcPhys.Spec.Cases;
 using AcPhys.Spec.Corpus;
 using AcPhys.Spec.Invariants;
 using AcPhys.Spec.Running;
@@ -163,7 +164,7 @@ internal sealed class VerifyReport(VerifySettings settings, ICellPhysics impl)
                 Field("replay", caseReplay);
             }
 
-            details[r.Invariant.Id] = new FailureDetail(line, confirmed, caseFile, caseReplay);
+            details[r.Invariant.Id] = new FailureDetail(line, confirmed, caseFile, caseReplay, r.Violation?.Case is Walk walk ? StepRows(walk) : null);
             if (!confirmed)
             {
                 Field(string.Empty, "(note: re-running this line did not reproduce the same shrunk case)");
@@ -219,6 +220,16 @@ internal sealed class VerifyReport(VerifySettings settings, ICellPhysics impl)
             WriteFile(markdown, MarkdownSummary.Render(run));
         }
     }
+
+    private IReadOnlyList<string[]> StepRows(Walk walk) =>
+        WalkRunner.Run(impl, walk).Select(step => new[]
+        {
+            step.Index.ToString(System.Globalization.CultureInfo.InvariantCulture),
+            step.Frame.ToString(),
+            $"({FloatText.Format(step.Position.X)}, {FloatText.Format(step.Position.Y)})",
+            step.Containing.IsNone ? "none" : step.Containing.ToString(),
+            "[" + string.Join(", ", step.Cells) + "]",
+        }).ToArray();
 
     private static void WriteFile(string path, string text)
     {
