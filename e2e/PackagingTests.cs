@@ -12,6 +12,18 @@ public sealed class PackagingTests
     {
         string configuration = AppContext.BaseDirectory.Contains("/Debug/", StringComparison.Ordinal) ? "Debug" : "Release";
         string work = Directory.CreateTempSubdirectory("acphys-pack-").FullName;
+        try
+        {
+            PackInstallRun(work, configuration);
+        }
+        finally
+        {
+            Directory.Delete(work, recursive: true);
+        }
+    }
+
+    private static void PackInstallRun(string work, string configuration)
+    {
         string packages = Path.Combine(work, "packages"), tools = Path.Combine(work, "tools");
 
         // A fresh version each run, so the install cannot be served a stale copy from the NuGet cache.
