@@ -20,6 +20,8 @@ internal static class Program
             ReplayCommand.Create(),
             RenderCommand.Create(),
             BiteCommand.Create(),
+            ServeCommand.Create(),
+            DiffCommand.Create(),
         };
 
         var parse = root.Parse(args);

@@ -1,4 +1,5 @@
 using System.CommandLine;
+using AcPhys.Cli.Impl;
 using AcPhys.Cli.Replay;
 using AcPhys.Spec.Adapters;
 using AcPhys.Spec.Faults;
@@ -21,12 +22,18 @@ internal static class ReplayCommand
             Description = "Check against the reference with this planted fault switched on (see: acphys faults).",
             HelpName = "FAULT",
         };
+        var implOptions = new ImplementationOptions();
         var command = new Command("replay", "Replay a stored case: every invariant on it, and whether it catches the faults it lists.") { file, fault };
-        command.SetAction(parse => Guard.Run("replay", () => Run(parse.GetValue(file) ?? string.Empty, parse.GetValue(fault))));
+        foreach (var option in implOptions.All)
+        {
+            command.Options.Add(option);
+        }
+
+        command.SetAction(parse => Guard.Run("replay", () => Run(parse.GetValue(file) ?? string.Empty, parse.GetValue(fault), implOptions.Read(parse))));
         return command;
     }
 
-    private static int Run(string path, string? faultId)
+    private static int Run(string path, string? faultId, ImplementationChoice choice)
     {
         if (Directory.Exists(path))
         {
@@ -45,7 +52,22 @@ internal static class ReplayCommand
                 ?? throw new UsageException($"unknown fault '{faultId}' (known: {string.Join(", ", PlantedFaults.All.Select(f => f.Id))})");
         }
 
-        ICellPhysics impl = fault is null ? ReferenceAdapter.Instance : PlantedFaults.Create(fault.Id);
-        return ReplayInputs.For(path).Replay(path, new ReplayTarget(impl, fault));
+        if (!choice.IsExternal)
+        {
+            ICellPhysics impl = fault is null ? ReferenceAdapter.Instance : PlantedFaults.Create(fault.Id);
+            return ReplayInputs.For(path).Replay(path, new ReplayTarget(impl, fault));
+        }
+
+        if (fault is not null)
+        {
+            throw new UsageException("--fault configures the bundled reference; it does not apply to --impl / --impl-cmd");
+        }
+
+        var input = ReplayInputs.For(path);
+        var (external, owned) = choice.Open(line => Console.Error.WriteLine("[impl] " + line));
+        using (owned)
+        {
+            return input.Replay(path, new ReplayTarget(external, null));
+        }
     }
 }

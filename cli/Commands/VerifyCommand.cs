@@ -1,11 +1,11 @@
 using System.CommandLine;
 using System.Diagnostics;
+using AcPhys.Cli.Impl;
 using AcPhys.Cli.Verify;
 using AcPhys.Spec.Adapters;
 using AcPhys.Spec.Faults;
 using AcPhys.Spec.Invariants;
 using AcPhys.Spec.Running;
-using Spectre.Console;
 
 namespace AcPhys.Cli.Commands;
 
@@ -52,10 +52,24 @@ internal static class VerifyCommand
             Description = "The pick policy of the bundled reference: retail (default) or current-first (acdream's hysteresis).",
             HelpName = "POLICY",
         };
-        var command = new Command("verify", "Run the invariant catalogue against the reference core (or a planted fault) and report.")
+        var cases = new Option<int?>("--cases")
         {
-            profile, only, seed, baseSeed, fault, quiet, classes, pick,
+            Description = "Generated cases per invariant, instead of the profile's (e.g. a small budget for a slow --impl-cmd).",
+            HelpName = "N",
         };
+        var sweeps = new Option<bool>("--sweeps") { Description = "Also run the exhaustive sweeps against an --impl-cmd implementation (millions of round trips; off by default there)." };
+        var junit = new Option<string>("--junit") { Description = "Also write the results as JUnit XML (one testcase per invariant) to this file.", HelpName = "FILE" };
+        var markdown = new Option<string>("--markdown") { Description = "Also write a markdown summary fit for a PR comment to this file.", HelpName = "FILE" };
+        var implOptions = new ImplementationOptions();
+        var command = new Command("verify", "Run the invariant catalogue against the reference core, a planted fault, or your implementation (--impl, --impl-cmd), and report.")
+        {
+            profile, only, seed, baseSeed, fault, quiet, classes, pick, cases, sweeps, junit, markdown,
+        };
+        foreach (var option in implOptions.All)
+        {
+            command.Options.Add(option);
+        }
+
         command.SetAction(parse => Guard.Run("verify", () =>
         {
             var settings = VerifySettings.Parse(
@@ -67,8 +81,12 @@ internal static class VerifyCommand
                 Pick = PickNames.TryParse(parse.GetValue(pick), out var policy)
                     ? policy
                     : throw new UsageException($"unknown pick policy '{parse.GetValue(pick)}' (known: retail, current-first)"),
+                Implementation = implOptions.Read(parse),
+                CasesOverride = parse.GetValue(cases),
+                JunitPath = parse.GetValue(junit),
+                MarkdownPath = parse.GetValue(markdown),
             };
-            return Run(settings);
+            return Run(WithBudget(settings, parse.GetValue(sweeps)));
         }));
         return command;
     }
@@ -76,10 +94,55 @@ internal static class VerifyCommand
     private static string DefaultProfile() =>
         Environment.GetEnvironmentVariable("ACPHYS_PROFILE") is { Length: > 0 } fromEnvironment ? fromEnvironment : "pr";
 
+    private static VerifySettings WithBudget(VerifySettings settings, bool sweeps)
+    {
+        if (settings.Implementation.IsExternal && (settings.Fault is not null || settings.Pick != AcPhys.Core.PickPolicy.Retail))
+        {
+            throw new UsageException("--fault and --pick configure the bundled reference; they do not apply to --impl / --impl-cmd");
+        }
+
+        if (sweeps && !settings.Implementation.IsProcess)
+        {
+            throw new UsageException("--sweeps applies to --impl-cmd (the in-process profiles sweep already)");
+        }
+
+        if (settings.CasesOverride is int n && n is < 1 or > 10_000_000)
+        {
+            throw new UsageException($"--cases must be between 1 and 10,000,000 (got {n})");
+        }
+
+        var profile = settings.Profile;
+        if (settings.CasesOverride is int cases)
+        {
+            profile = profile with { CasesPerInvariant = cases };
+        }
+
+        if (settings.Implementation.IsProcess && !sweeps)
+        {
+            profile = profile with { Exhaustive = false }; // millions of round trips: opt in with --sweeps
+        }
+
+        return settings with { Profile = profile };
+    }
+
     private static int Run(VerifySettings settings)
     {
-        ICellPhysics impl = settings.Fault is not null ? PlantedFaults.Create(settings.Fault.Id)
-            : settings.Pick == AcPhys.Core.PickPolicy.CurrentFirst ? ReferenceAdapter.CurrentFirst : ReferenceAdapter.Instance;
+        if (!settings.Implementation.IsExternal)
+        {
+            ICellPhysics reference = settings.Fault is not null ? PlantedFaults.Create(settings.Fault.Id)
+                : settings.Pick == AcPhys.Core.PickPolicy.CurrentFirst ? ReferenceAdapter.CurrentFirst : ReferenceAdapter.Instance;
+            return Run(settings, reference);
+        }
+
+        var (impl, owned) = settings.Implementation.Open(settings.Quiet ? null : line => Console.Error.WriteLine("[impl] " + line));
+        using (owned)
+        {
+            return Run(settings, impl);
+        }
+    }
+
+    private static int Run(VerifySettings settings, ICellPhysics impl)
+    {
         var report = new VerifyReport(settings, impl);
         if (!settings.Quiet)
         {
@@ -103,6 +166,7 @@ internal static class VerifyCommand
 
         report.WriteFailures(results);
         report.WriteSummary(results, stopwatch.Elapsed);
+        report.WriteFiles(results, stopwatch.Elapsed);
         return results.Any(r => r.Status == ResultStatus.Failed) ? ExitCodes.Violated : ExitCodes.Ok;
     }
 
@@ -115,15 +179,11 @@ internal static class VerifyCommand
         }
 
         int total = only?.Count ?? InvariantCatalogue.All.Count;
-        int done = 0;
         IReadOnlyList<InvariantResult> results = [];
-        Terminal.Err.Status().Start($"checking {total} invariants against {impl.Name} ...", context =>
+        ProgressBars.Run($"verify {impl.Name}", total, advance =>
         {
             results = CatalogueRunner.RunCatalogue(impl, settings.Profile, only, settings.FixedSeed, result =>
-            {
-                done++;
-                context.Status(Markup.Escape($"checked {done}/{total} invariants (last: {result.Invariant.Id} {VerifyReport.Verdict(result.Status)}) ..."));
-            });
+                advance($"{result.Invariant.Id} {VerifyReport.Verdict(result.Status)}"));
         });
         return results;
     }

@@ -63,6 +63,16 @@ internal static class ReplayLine
         }
 
         words.AddRange(["--only", result.Invariant.Id]);
+        if (settings.CasesOverride is int n)
+        {
+            words.AddRange(["--cases", n.ToString(System.Globalization.CultureInfo.InvariantCulture)]);
+        }
+
+        if (settings.Implementation.IsProcess && settings.Profile.Exhaustive)
+        {
+            words.Add("--sweeps");
+        }
+
         if (seed is Seed s)
         {
             words.AddRange(["--seed", s.ToString()]);
@@ -73,6 +83,7 @@ internal static class ReplayLine
             words.AddRange(["--fault", settings.Fault.Id]);
         }
 
+        words.AddRange(settings.Implementation.Words());
         return string.Join(' ', words.Select(Quote));
     }
 }

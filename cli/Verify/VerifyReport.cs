@@ -1,4 +1,5 @@
 using AcPhys.Spec.Adapters;
+using AcPhys.Spec.Cases;
 using AcPhys.Spec.Corpus;
 using AcPhys.Spec.Invariants;
 using AcPhys.Spec.Running;
@@ -11,6 +12,8 @@ namespace AcPhys.Cli.Verify;
 /// <param name="impl">The implementation under test.</param>
 internal sealed class VerifyReport(VerifySettings settings, ICellPhysics impl)
 {
+    private readonly Dictionary<string, FailureDetail> details = [];
+
     /// <summary>Returns the verdict word of a status.</summary>
     /// <param name="status">The status.</param>
     /// <returns>PASS, FAIL or NOT TESTED.</returns>
@@ -30,6 +33,12 @@ internal sealed class VerifyReport(VerifySettings settings, ICellPhysics impl)
             : $"profile {settings.Profile.Name}: {Fmt.Count(settings.Profile.CasesPerInvariant)} generated cases per invariant"
                 + (settings.Profile.Exhaustive ? " + exhaustive sweeps" : string.Empty);
         Terminal.Line($"verify: {count} invariant{(count == 1 ? string.Empty : "s")} against {impl.Name}; {budget}");
+        if (impl.Ops != Op.All)
+        {
+            // A partial implementation: say up front what it offers; invariants needing the rest are NOT TESTED.
+            Terminal.Line($"capabilities: offers {string.Join(", ", OpNames.Names(impl.Ops))}; lacks {string.Join(", ", OpNames.Names(Op.All & ~impl.Ops))}");
+        }
+
         if (settings.Fault is not null)
         {
             Terminal.Line($"planted fault {settings.Fault.Id}: {settings.Fault.Title} (expected catchers: {string.Join(", ", settings.Fault.CaughtBy)})");
@@ -146,11 +155,16 @@ internal sealed class VerifyReport(VerifySettings settings, ICellPhysics impl)
             var (line, confirmed) = ReplayLine.For(r, settings, impl);
             Field("seed", r.Seed.ToString());
             Field("replay", line);
+            string? caseFile = null, caseReplay = null;
             if (r.Violation is { } shrunk && FailureFile.Write(shrunk, FailureFolder, "props", r.Seed.ToString()) is string file)
             {
+                caseFile = file;
+                caseReplay = string.Join(' ', new[] { ReplayLine.Program, "replay", file }.Concat(settings.Fault is null ? [] : ["--fault", settings.Fault.Id]).Concat(settings.Implementation.Words()).Select(ReplayLine.Quote));
                 Field("case file", file);
-                Field("replay", ReplayLine.Quote(ReplayLine.Program) + " replay " + ReplayLine.Quote(file) + (settings.Fault is null ? string.Empty : " --fault " + settings.Fault.Id));
+                Field("replay", caseReplay);
             }
+
+            details[r.Invariant.Id] = new FailureDetail(line, confirmed, caseFile, caseReplay, r.Violation?.Case is Walk walk ? StepRows(walk) : null);
             if (!confirmed)
             {
                 Field(string.Empty, "(note: re-running this line did not reproduce the same shrunk case)");
@@ -190,6 +204,52 @@ internal sealed class VerifyReport(VerifySettings settings, ICellPhysics impl)
         Terminal.Line($"verify: {results.Count} invariant{(results.Count == 1 ? string.Empty : "s")}, {passed} passed, {failed} failed, {notTested} not tested ({string.Join(", ", details)})");
     }
 
+    /// <summary>Writes the <c>--junit</c> and <c>--markdown</c> files, when asked for (atomically).</summary>
+    /// <param name="results">The results.</param>
+    /// <param name="elapsed">Wall time of the run.</param>
+    public void WriteFiles(IReadOnlyList<InvariantResult> results, TimeSpan elapsed)
+    {
+        var run = new GateRun(impl.Name, settings, results, details, elapsed);
+        if (settings.JunitPath is string junit)
+        {
+            WriteFile(junit, JunitReport.Render(run));
+        }
+
+        if (settings.MarkdownPath is string markdown)
+        {
+            WriteFile(markdown, MarkdownSummary.Render(run));
+        }
+    }
+
+    private IReadOnlyList<string[]> StepRows(Walk walk) =>
+        WalkRunner.Run(impl, walk).Select(step => new[]
+        {
+            step.Index.ToString(System.Globalization.CultureInfo.InvariantCulture),
+            step.Frame.ToString(),
+            $"({FloatText.Format(step.Position.X)}, {FloatText.Format(step.Position.Y)})",
+            step.Containing.IsNone ? "none" : step.Containing.ToString(),
+            "[" + string.Join(", ", step.Cells) + "]",
+        }).ToArray();
+
+    private static void WriteFile(string path, string text)
+    {
+        try
+        {
+            AtomicFile.WriteAllText(path, text);
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+        {
+            throw new UsageException($"cannot write '{path}': {e.Message}", e);
+        }
+
+        if (!Terminal.ShowsProgress)
+        {
+            return;
+        }
+
+        Terminal.Err.MarkupLine($"[grey]wrote {Markup.Escape(path)}[/]");
+    }
+
     private static string VerdictMarkup(ResultStatus status) => status switch
     {
         ResultStatus.Passed => "[green]PASS[/]",
@@ -215,6 +275,7 @@ internal sealed class VerifyReport(VerifySettings settings, ICellPhysics impl)
             words.AddRange(["--fault", settings.Fault.Id]);
         }
 
+        words.AddRange(settings.Implementation.Words());
         return string.Join(' ', words.Select(ReplayLine.Quote));
     }
 }

@@ -32,6 +32,18 @@ internal sealed record VerifySettings
     /// <summary>Gets the pick policy the bundled reference runs with (<c>--pick</c>).</summary>
     public AcPhys.Core.PickPolicy Pick { get; init; }
 
+    /// <summary>Gets the implementation under test (the bundled reference unless <c>--impl</c> / <c>--impl-cmd</c>).</summary>
+    public Impl.ImplementationChoice Implementation { get; init; } = Impl.ImplementationChoice.Reference;
+
+    /// <summary>Gets the <c>--cases</c> override of the profile's cases per invariant, if any.</summary>
+    public int? CasesOverride { get; init; }
+
+    /// <summary>Gets the JUnit XML file to write (<c>--junit</c>), if any.</summary>
+    public string? JunitPath { get; init; }
+
+    /// <summary>Gets the markdown summary file to write (<c>--markdown</c>), if any.</summary>
+    public string? MarkdownPath { get; init; }
+
     /// <summary>Gets a value indicating whether only failures and the summary are printed.</summary>
     public bool Quiet { get; init; }
 

@@ -107,7 +107,7 @@ public static class CorpusJson
             Require(kind is "land" or "walk" or "scene-walk", source, "$.kind", "expected \"land\" or \"walk\" (or \"scene-walk\")");
             string title = Str(root, "title", source);
             string foundBy = Str(root, "foundBy", source);
-            Require(foundBy is "hand" or "props" or "fuzz" or "spec", source, "$.foundBy", "expected hand, props, fuzz or spec");
+            Require(foundBy is "hand" or "props" or "fuzz" or "spec" or "diff", source, "$.foundBy", "expected hand, props, fuzz, spec or diff");
             string? invariant = OptStr(root, "invariant", source);
             string? seed = OptStr(root, "seed", source);
             var catches = new List<string>();

@@ -1,0 +1,78 @@
+using System.Text;
+using AcPhys.Spec.Adapters;
+using AcPhys.Spec.Cases;
+
+namespace AcPhys.Cli.Diff;
+
+/// <summary>The two answers to a diverging input, side by side: one row per op (a land case) or per step (a walk).</summary>
+internal static class SideBySide
+{
+    /// <summary>Builds the rows for a diverging case.</summary>
+    /// <param name="c">The case (LandCase, OutdoorCase, Walk or PartsCase).</param>
+    /// <param name="impl">The implementation.</param>
+    /// <param name="reference">The reference.</param>
+    /// <returns>(what was asked, implementation's answer, reference's answer) rows.</returns>
+    public static IReadOnlyList<(string Query, string Implementation, string Reference)> Rows(object? c, ICellPhysics impl, ICellPhysics reference)
+    {
+        switch (c)
+        {
+            case LandCase land:
+                {
+                    var ops = impl.Ops & Op.LandDefs;
+                    var a = Answers.Land(impl, land, ops);
+                    var b = Answers.Land(reference, land, ops);
+                    return a.Zip(b, (x, y) => (x.Call, x.Answer, y.Answer)).ToArray();
+                }
+
+            case OutdoorCase q:
+                {
+                    var rows = new List<(string, string, string)>();
+                    if ((impl.Ops & Op.OutsideCells) != 0)
+                    {
+                        rows.Add(("outside_cells", Answers.Cells(impl.OutsideCells(q.Cell, q.Spheres)), Answers.Cells(reference.OutsideCells(q.Cell, q.Spheres))));
+                    }
+
+                    if ((impl.Ops & Op.FindCell) != 0)
+                    {
+                        var x = impl.FindCell(q.Cell, q.Spheres, default);
+                        var y = reference.FindCell(q.Cell, q.Spheres, default);
+                        rows.Add(("find_cell", Answers.Cells(x.Cells, x.Containing), Answers.Cells(y.Cells, y.Containing)));
+                    }
+
+                    return rows;
+                }
+
+            case Walk walk:
+                {
+                    var a = WalkRunner.Run(impl, walk);
+                    var b = WalkRunner.Run(reference, walk);
+                    return a.Zip(b, (x, y) => (
+                        $"step {x.Index}: find_cell({x.Frame}, ({Answers.Float(x.Position.X)}, {Answers.Float(x.Position.Y)}), current {(x.Index == 0 ? "none" : a[x.Index - 1].Current.ToString())})",
+                        Answers.Cells(x.Cells, x.Containing),
+                        Answers.Cells(y.Cells, y.Containing))).ToArray();
+                }
+
+            case PartsCase parts:
+                return [("outside_cells_parts", Answers.Cells(impl.OutsideCellsParts(parts.Parts)), Answers.Cells(reference.OutsideCellsParts(parts.Parts)))];
+
+            default:
+                return [];
+        }
+    }
+
+    /// <summary>Renders rows as a markdown table, marking the rows that differ.</summary>
+    /// <param name="rows">The rows.</param>
+    /// <param name="implName">The implementation's name.</param>
+    /// <returns>The table.</returns>
+    public static string Markdown(IReadOnlyList<(string Query, string Implementation, string Reference)> rows, string implName)
+    {
+        var md = new StringBuilder();
+        md.Append($"| query | {implName} | reference | |\n|---|---|---|---|\n");
+        foreach (var (query, mine, theirs) in rows)
+        {
+            md.Append($"| `{query}` | {mine} | {theirs} | {(mine == theirs ? string.Empty : "**differs**")} |\n");
+        }
+
+        return md.ToString();
+    }
+}

@@ -1,0 +1,124 @@
+using System.Globalization;
+using System.Text;
+using System.Xml;
+using AcPhys.Spec.Running;
+
+namespace AcPhys.Cli.Verify;
+
+/// <summary>
+/// Renders a run as JUnit XML in the common Ant / Jenkins shape (schemas/junit-10.xsd): one <c>testsuite</c>, one
+/// <c>testcase</c> per invariant; a violation is a <c>failure</c> carrying the shrunk case and the replay line, a
+/// missing operation is <c>skipped</c>.
+/// </summary>
+internal static class JunitReport
+{
+    /// <summary>Renders the XML.</summary>
+    /// <param name="run">The run.</param>
+    /// <returns>The document text (UTF-8 declaration).</returns>
+    public static string Render(GateRun run)
+    {
+        var settings = new XmlWriterSettings { Indent = true, Encoding = new UTF8Encoding(false), NewLineChars = "\n" };
+        using var buffer = new MemoryStream();
+        using (var xml = XmlWriter.Create(buffer, settings))
+        {
+            string suite = "acphys verify: " + run.ImplName;
+            xml.WriteStartDocument();
+            xml.WriteStartElement("testsuites");
+            xml.WriteAttributeString("name", suite);
+            Counts(xml, run);
+            xml.WriteStartElement("testsuite");
+            xml.WriteAttributeString("name", suite);
+            Counts(xml, run);
+            xml.WriteAttributeString("timestamp", DateTime.UtcNow.ToString("yyyy-MM-ddTHH:mm:ss", CultureInfo.InvariantCulture));
+            xml.WriteAttributeString("hostname", "localhost");
+            xml.WriteStartElement("properties");
+            Property(xml, "implementation", run.ImplName);
+            Property(xml, "profile", run.Settings.Profile.Name);
+            Property(xml, "cases-per-invariant", run.Settings.Profile.CasesPerInvariant.ToString(CultureInfo.InvariantCulture));
+            Property(xml, "seed", run.SeedText);
+            xml.WriteEndElement();
+
+            foreach (var r in run.Results)
+            {
+                xml.WriteStartElement("testcase");
+                xml.WriteAttributeString("name", r.Invariant.Id);
+                xml.WriteAttributeString("classname", "acphys.invariants");
+                xml.WriteAttributeString("time", Seconds(r.Elapsed));
+                switch (r.Status)
+                {
+                    case ResultStatus.Failed:
+                        xml.WriteStartElement("failure");
+                        xml.WriteAttributeString("message", $"{r.Invariant.Id}: {r.Violation?.Message ?? "violated"}");
+                        xml.WriteAttributeString("type", "InvariantViolated");
+                        xml.WriteString(FailureText(r, run.Failures.GetValueOrDefault(r.Invariant.Id)));
+                        xml.WriteEndElement();
+                        break;
+                    case ResultStatus.NotTested:
+                        xml.WriteStartElement("skipped");
+                        xml.WriteAttributeString("message", "not tested: " + (r.NotTestedReason ?? "the implementation lacks an operation it needs"));
+                        xml.WriteEndElement();
+                        break;
+                }
+
+                xml.WriteStartElement("system-out");
+                xml.WriteString($"{r.Invariant.Statement}\ncases {r.Cases}, applicable {r.Applicable}, exhaustive {r.ExhaustiveCases}, seed {r.Seed}\n");
+                xml.WriteEndElement();
+                xml.WriteEndElement();
+            }
+
+            xml.WriteEndElement();
+            xml.WriteEndElement();
+            xml.WriteEndDocument();
+        }
+
+        return Encoding.UTF8.GetString(buffer.ToArray());
+    }
+
+    private static string FailureText(InvariantResult r, FailureDetail? detail)
+    {
+        var text = new StringBuilder();
+        text.Append("statement: ").Append(r.Invariant.Statement).Append('\n');
+        if (r.Violation is { } v)
+        {
+            text.Append("shrunk:    ").Append(v.CaseText).Append('\n');
+            text.Append("message:   ").Append(v.Message).Append('\n');
+        }
+
+        if (r.Original is { } o && o != r.Violation)
+        {
+            text.Append("original:  ").Append(o.CaseText).Append('\n');
+        }
+
+        text.Append("seed:      ").Append(r.Seed.ToString()).Append('\n');
+        if (detail is not null)
+        {
+            text.Append("replay:    ").Append(detail.ReplayLine).Append('\n');
+            if (detail.CaseReplay is not null)
+            {
+                text.Append("case file: ").Append(detail.CaseFile).Append('\n');
+                text.Append("replay:    ").Append(detail.CaseReplay).Append('\n');
+            }
+        }
+
+        return text.ToString();
+    }
+
+    private static void Counts(XmlWriter xml, GateRun run)
+    {
+        xml.WriteAttributeString("tests", run.Results.Count.ToString(CultureInfo.InvariantCulture));
+        xml.WriteAttributeString("failures", run.Failed.ToString(CultureInfo.InvariantCulture));
+        xml.WriteAttributeString("errors", "0");
+        xml.WriteAttributeString("skipped", run.NotTested.ToString(CultureInfo.InvariantCulture));
+        xml.WriteAttributeString("time", Seconds(run.Elapsed));
+    }
+
+    private static void Property(XmlWriter xml, string name, string value)
+    {
+        xml.WriteStartElement("property");
+        xml.WriteAttributeString("name", name);
+        xml.WriteAttributeString("value", value);
+        xml.WriteEndElement();
+    }
+
+    private static string Seconds(TimeSpan t) => t.TotalSeconds.ToString("0.000", CultureInfo.InvariantCulture);
+}

@@ -1,0 +1,129 @@
+using AcPhys.E2E.Support;
+
+namespace AcPhys.E2E;
+
+/// <summary>
+/// verify --impl-cmd, end to end: the reference served over protocol v1 and the Python example pass with no false
+/// alarm; their seeded bugs are caught through the protocol with a shrunk case; broken children are exit 2.
+/// </summary>
+public sealed class OutOfProcessTests
+{
+    [Fact]
+    public void ServedReferencePassesEveryTestedInvariant()
+    {
+        // The whole catalogue over the process boundary: the wire encoding loses nothing the invariants see.
+        var run = Acphys.Run(["verify", "--impl-cmd", Acphys.ServeCommand, "--cases", "150", "--timeout", "60"]);
+        Assert.True(run.Exit == 0, run.ToString());
+        Assert.Contains(" 0 failed", run.Out, StringComparison.Ordinal);
+        Assert.Contains("NOT TESTED HYSTERESIS", run.Out, StringComparison.Ordinal); // serve declares the retail pick
+    }
+
+    [Fact]
+    public void ServedPlantedFaultIsCaughtWithShrunkWalkAndReplayLine()
+    {
+        var run = Acphys.Run(["verify", "--impl-cmd", Acphys.ServeCommand + " --fault clamp-106", "--only", "NO-BOUNDARY-FREEZE", "--cases", "300", "--timeout", "60"]);
+        Assert.True(run.Exit == 1, run.ToString());
+        Assert.Contains("FAIL NO-BOUNDARY-FREEZE on reference+clamp-106", run.Out, StringComparison.Ordinal);
+        string replay = Line(run.Out, "  replay     acphys verify");
+        Assert.Contains("--impl-cmd", replay, StringComparison.Ordinal);
+        Assert.Contains("--fault clamp-106", replay, StringComparison.Ordinal);
+    }
+
+    [RequiresPythonFact]
+    public void PythonExamplePassesWithNoFalseAlarm()
+    {
+        var run = Acphys.Run(["verify", "--impl-cmd", Acphys.PythonExample, "--cases", "400", "--timeout", "60"]);
+        Assert.True(run.Exit == 0, run.ToString());
+        Assert.Contains("against python-example;", run.Out, StringComparison.Ordinal);
+        Assert.Contains("verify: 21 invariants, 18 passed, 0 failed, 3 not tested", run.Out, StringComparison.Ordinal);
+        Assert.Contains("[impl] acphys_impl.py: protocol 1", run.Err, StringComparison.Ordinal); // its stderr log is passed through
+    }
+
+    [RequiresPythonFact]
+    public void PythonClampBugIsCaughtThroughTheProtocolWithAShrunkWalk()
+    {
+        var run = Acphys.Run(
+            ["verify", "--impl-cmd", Acphys.PythonExample, "--only", "NO-BOUNDARY-FREEZE", "--cases", "500", "--timeout", "60"],
+            new Dictionary<string, string> { ["ACPHYS_PY_BUG"] = "clamp-106" });
+        Assert.True(run.Exit == 1, run.ToString());
+        Assert.Contains("FAIL NO-BOUNDARY-FREEZE on python-example+clamp-106", run.Out, StringComparison.Ordinal);
+
+        // Shrunk to a walk of at most two steps (one step over a block line freezes the clamped port).
+        string shrunk = Line(run.Out, "  shrunk     start ");
+        string steps = shrunk[(shrunk.IndexOf("steps [", StringComparison.Ordinal) + 7)..].TrimEnd(']');
+        Assert.True(steps.Split(';').Length <= 2, shrunk);
+        Assert.Contains("containing 0x00000000", run.Out, StringComparison.Ordinal);
+        string caseFile = Line(run.Out, "  case file  ")["  case file  ".Length..].Trim();
+        Assert.True(File.Exists(Path.IsPathRooted(caseFile) ? caseFile : Path.Combine(RepoPaths.Root, caseFile)), caseFile);
+    }
+
+    [RequiresPythonFact]
+    public void PythonTruncationBugIsCaughtWithAShrunkCase()
+    {
+        var run = Acphys.Run(["verify", "--impl-cmd", Acphys.PythonExample + " --bug trunc-floor", "--only", "ADJUST-RANGE,OUTSIDE-LCOORD-GEOMETRY", "--cases", "500", "--timeout", "60"]);
+        Assert.True(run.Exit == 1, run.ToString());
+        Assert.Contains("FAIL ADJUST-RANGE on python-example+trunc-floor", run.Out, StringComparison.Ordinal);
+        Assert.Contains("FAIL OUTSIDE-LCOORD-GEOMETRY on python-example+trunc-floor", run.Out, StringComparison.Ordinal);
+        Assert.Contains("  shrunk     cell=", run.Out, StringComparison.Ordinal);
+    }
+
+    [RequiresPythonFact]
+    public void PartialImplementationIsTestedOnWhatItHasAndTheRestIsListed()
+    {
+        var run = Acphys.Run(["verify", "--impl-cmd", Acphys.PythonExample + " --ops lcoord_to_gid,gid_to_lcoord", "--cases", "300", "--timeout", "60"]);
+        Assert.True(run.Exit == 0, run.ToString());
+        Assert.Contains("verify: 21 invariants, 1 passed, 0 failed, 20 not tested", run.Out, StringComparison.Ordinal);
+        Assert.Contains("capabilities: offers gid_to_lcoord, lcoord_to_gid; lacks blockid_to_lcoord, inbound_valid_cellid,", run.Out, StringComparison.Ordinal);
+        Assert.Contains("NOT TESTED COVERAGE: implementation lacks outside_cells", run.Out, StringComparison.Ordinal);
+        Assert.Contains("NOT TESTED ADJUST-RANGE: implementation lacks adjust_to_outside", run.Out, StringComparison.Ordinal);
+    }
+
+    [Fact]
+    public void HangingImplementationIsReportedWithinTheTimeout()
+    {
+        var run = Acphys.Run(["verify", "--impl-cmd", Acphys.Script("hang-after-hello.sh"), "--timeout", "1", "--only", "LCOORD-ROUNDTRIP"]);
+        Assert.True(run.Exit == 2, run.ToString());
+        Assert.Contains("did not answer 'gid_to_lcoord' within 1 s (--timeout); it was killed", run.Err, StringComparison.Ordinal);
+        Assert.Contains("hang-after-hello: going to sleep", run.Err, StringComparison.Ordinal); // its last stderr lines are quoted
+        Assert.True(run.Elapsed < TimeSpan.FromSeconds(20), run.ToString());
+    }
+
+    [Fact]
+    public void CrashingImplementationIsExit2WithItsExitCodeAndLog()
+    {
+        var run = Acphys.Run(["verify", "--impl-cmd", Acphys.Script("crash-after-hello.sh"), "--only", "LCOORD-ROUNDTRIP", "--quiet"]);
+        Assert.True(run.Exit == 2, run.ToString());
+        Assert.Contains("acphys verify: the implementation could not answer:", run.Err, StringComparison.Ordinal);
+        Assert.Contains("exited with code 3", run.Err, StringComparison.Ordinal);
+        Assert.Contains("simulated segmentation fault", run.Err, StringComparison.Ordinal);
+        Assert.DoesNotContain("   at ", run.Err, StringComparison.Ordinal); // no stack trace
+    }
+
+    [Fact]
+    public void GarbageHandshakeIsExit2WithClearMessage()
+    {
+        var run = Acphys.Run(["verify", "--impl-cmd", Acphys.Script("garbage.sh"), "--timeout", "5"]);
+        Assert.True(run.Exit == 2, run.ToString());
+        Assert.Contains("answered 'hello' with something that is not protocol v1", run.Err, StringComparison.Ordinal);
+        Assert.Contains("Welcome to my physics server", run.Err, StringComparison.Ordinal);
+    }
+
+    [Fact]
+    public void GarbageAnswerIsExit2NotAViolation()
+    {
+        var run = Acphys.Run(["verify", "--impl-cmd", Acphys.Script("garbage-answer.sh"), "--only", "LCOORD-ROUNDTRIP", "--timeout", "60"]);
+        Assert.True(run.Exit == 2, run.ToString());
+        Assert.Contains("answered 'gid_to_lcoord' with something that is not protocol v1: missing field \"ok\"", run.Err, StringComparison.Ordinal);
+    }
+
+    [Fact]
+    public void MissingCommandIsExit2()
+    {
+        var run = Acphys.Run(["verify", "--impl-cmd", "/nonexistent/impl --serve", "--only", "LCOORD-ROUNDTRIP"]);
+        Assert.True(run.Exit == 2, run.ToString());
+        Assert.Contains("could not answer", run.Err, StringComparison.Ordinal);
+    }
+
+    private static string Line(string text, string prefix) =>
+        text.Split('\n').FirstOrDefault(l => l.StartsWith(prefix, StringComparison.Ordinal)) ?? throw new Xunit.Sdk.XunitException($"no line starting '{prefix}' in:\n{text}");
+}

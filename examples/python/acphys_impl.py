@@ -1,0 +1,330 @@
+#!/usr/bin/env python3
+"""A small implementation of Asheron's Call outdoor cell membership, speaking AcPhysVerify protocol v1.
+
+Standard library only. It reads one JSON request per line on stdin and answers one JSON object per line on stdout,
+in order (docs/protocol.md); logs go to stderr. It offers the LandDefs ops, outside_cells and find_cell on open land
+with the retail pick, written from the facts specification (../shared/spec/retail-cell-physics-facts.md, cited as
+"facts §x"), not from the C# core.
+
+Run it under the suite:
+
+    acphys verify --impl-cmd "python3 examples/python/acphys_impl.py"
+
+Seeded bugs, to see the suite catch a defect through the process protocol (--bug NAME or ACPHYS_PY_BUG=NAME):
+
+    clamp-106    candidates and the containing pick clamped to the position's landblock (acdream #106)
+    trunc-floor  get_outside_lcoord truncates x/24 toward zero instead of flooring (facts §6.2)
+
+--ops NAME[,NAME...] announces only some ops (a partial implementation: the rest is reported as not tested).
+"""
+
+import argparse
+import json
+import math
+import os
+import struct
+import sys
+
+PROTOCOL = 1
+LAND_LENGTH = 2040          # lcoords per map side (facts §1.3)
+CELL_LENGTH = 24.0          # metres per land cell side
+BLOCK_LENGTH = 192.0        # metres per landblock side
+EPSILON = struct.unpack("<f", struct.pack("<f", 0.0002))[0]   # facts §1.5, the float32 value of 0.0002f
+ALL_OPS = ["blockid_to_lcoord", "gid_to_lcoord", "lcoord_to_gid", "inbound_valid_cellid",
+           "get_outside_lcoord", "adjust_to_outside", "outside_cells", "find_cell"]
+BUGS = ("clamp-106", "trunc-floor")
+
+
+class BadRequest(Exception):
+    """A request this implementation cannot read."""
+
+
+def f32(v):
+    """Rounds a Python float (a double) to the nearest float32, as a float32 operation in C would."""
+    try:
+        return struct.unpack("<f", struct.pack("<f", v))[0]
+    except OverflowError:
+        return math.copysign(math.inf, v)
+
+
+# ---- values on the wire -------------------------------------------------------------------------------------------
+
+def read_cell(text):
+    if not (isinstance(text, str) and len(text) == 10 and text[:2] in ("0x", "0X")):
+        raise BadRequest("cell id must be a string 0xAABBCCCC, got %r" % (text,))
+    try:
+        return int(text[2:], 16)
+    except ValueError:
+        raise BadRequest("cell id must be 8 hex digits, got %r" % (text,))
+
+
+def cell_text(cell):
+    return "0x%08X" % cell
+
+
+def read_float(v):
+    if isinstance(v, str):
+        if v == "NaN":
+            return math.nan
+        if v == "Infinity":
+            return math.inf
+        if v == "-Infinity":
+            return -math.inf
+        raise BadRequest("not a number: %r" % (v,))
+    if isinstance(v, bool) or not isinstance(v, (int, float)):
+        raise BadRequest("not a number: %r" % (v,))
+    return f32(float(v))
+
+
+def float_value(v):
+    if math.isnan(v):
+        return "NaN"
+    if math.isinf(v):
+        return "Infinity" if v > 0 else "-Infinity"
+    return v
+
+
+def read_int(v):
+    if isinstance(v, bool) or not isinstance(v, int):
+        raise BadRequest("not an integer: %r" % (v,))
+    return v
+
+
+def read_spheres(items):
+    if not isinstance(items, list):
+        raise BadRequest("spheres must be a list")
+    return [(read_float(s["x"]), read_float(s["y"]), read_float(s["z"]), read_float(s["r"])) for s in items]
+
+
+# ---- LandDefs (facts §1-§2) ---------------------------------------------------------------------------------------
+
+def block_x(cell):
+    return (cell >> 24) & 0xFF
+
+
+def block_y(cell):
+    return (cell >> 16) & 0xFF
+
+
+def low(cell):
+    return cell & 0xFFFF
+
+
+def in_bounds(x, y):
+    return 0 <= x < LAND_LENGTH and 0 <= y < LAND_LENGTH
+
+
+def cell_in_range(lo):
+    return lo == 0xFFFF or 1 <= lo <= 64 or 0x100 <= lo <= 0xFFFD
+
+
+def blockid_to_lcoord(cell):
+    if cell == 0:
+        return None                      # retail reports failure for id 0 (facts §2)
+    x, y = block_x(cell) * 8, block_y(cell) * 8
+    if x >= LAND_LENGTH or y >= LAND_LENGTH:
+        return None
+    return x, y
+
+
+def inbound_valid_cellid(cell):
+    # retail tests both block bytes (facts §2; ACE tests only bx)
+    return cell_in_range(low(cell)) and block_x(cell) * 8 < LAND_LENGTH and block_y(cell) * 8 < LAND_LENGTH
+
+
+def gid_to_lcoord(cell):
+    if not inbound_valid_cellid(cell) or low(cell) >= 0x100:
+        return None
+    index = low(cell) - 1                # X is the major index (facts §1.2)
+    x = block_x(cell) * 8 + (index >> 3)
+    y = block_y(cell) * 8 + (index & 7)
+    return (x, y) if in_bounds(x, y) else None
+
+
+def lcoord_to_gid(x, y):
+    if not in_bounds(x, y):
+        return 0
+    return ((x >> 3) << 24) | ((y >> 3) << 16) | (1 + ((x & 7) << 3) + (y & 7))
+
+
+def get_outside_lcoord(cell, x, y):
+    if not cell_in_range(low(cell)):
+        return None
+    block = blockid_to_lcoord(cell)
+    if block is None or not (math.isfinite(x) and math.isfinite(y)):
+        return None
+    if BUG == "trunc-floor":
+        cx, cy = math.trunc(x / CELL_LENGTH), math.trunc(y / CELL_LENGTH)
+    else:
+        cx, cy = math.floor(x / CELL_LENGTH), math.floor(y / CELL_LENGTH)   # floor toward -inf (facts §2)
+    gx, gy = block[0] + cx, block[1] + cy
+    return (gx, gy) if in_bounds(gx, gy) else None
+
+
+def rebase(v, length):
+    """v - length * floor(v / length), exact in double, rounded once to float32."""
+    return f32(v - length * math.floor(v / length))
+
+
+def adjust_to_outside(cell, x, y):
+    """facts §2.1: returns (ok, cell, x, y)."""
+    if not cell_in_range(low(cell)):
+        return False, 0, x, y            # loc untouched
+    if abs(x) < EPSILON:                 # strict, per axis
+        x = 0.0
+    if abs(y) < EPSILON:
+        y = 0.0
+    lc = get_outside_lcoord(cell, x, y)
+    if lc is None:
+        return False, 0, x, y            # the snapped loc is kept
+    return True, lcoord_to_gid(*lc), rebase(x, BLOCK_LENGTH), rebase(y, BLOCK_LENGTH)
+
+
+# ---- outdoor cell sets (facts §3, §4) ------------------------------------------------------------------------------
+
+def add_outside_cell(cells, x, y, position):
+    if not in_bounds(x, y):
+        return
+    cell = lcoord_to_gid(x, y)
+    if BUG == "clamp-106" and (cell >> 16) != (position >> 16):
+        return                           # the seeded bug: candidates clamped to the position's landblock
+    if cell not in cells:
+        cells.append(cell)               # every block is loaded on open land
+
+
+def check_add_cell_boundary(cells, pt_x, pt_y, x, y, min_rad, max_rad, position):
+    # facts §3.2: strict comparisons, exact order; not "else": with r > 12 both x sides can fire
+    if pt_x > max_rad:
+        add_outside_cell(cells, x + 1, y, position)
+        if pt_y > max_rad:
+            add_outside_cell(cells, x + 1, y + 1, position)
+        if pt_y < min_rad:
+            add_outside_cell(cells, x + 1, y - 1, position)
+    if pt_x < min_rad:
+        add_outside_cell(cells, x - 1, y, position)
+        if pt_y > max_rad:
+            add_outside_cell(cells, x - 1, y + 1, position)
+        if pt_y < min_rad:
+            add_outside_cell(cells, x - 1, y - 1, position)
+    if pt_y > max_rad:
+        add_outside_cell(cells, x, y + 1, position)
+    if pt_y < min_rad:
+        add_outside_cell(cells, x, y - 1, position)
+
+
+def outside_cells(position, spheres):
+    """facts §3.3, the sphere variant, every landblock loaded."""
+    cells = []
+    if not spheres:
+        ok, cell, _, _ = adjust_to_outside(position, 0.0, 0.0)
+        if ok:
+            add_outside_cell(cells, *gid_to_lcoord(cell), position)
+        return cells
+    for (sx, sy, _, r) in spheres:
+        ok, cell, cx, cy = adjust_to_outside(position, sx, sy)   # each sphere starts from the position's id
+        if not ok:
+            break                        # a failed sphere ends the loop; cells already added stay
+        pt_x = cx - CELL_LENGTH * math.floor(cx / CELL_LENGTH)   # exact: cx is in [0, 192)
+        pt_y = cy - CELL_LENGTH * math.floor(cy / CELL_LENGTH)
+        lx, ly = gid_to_lcoord(cell)
+        add_outside_cell(cells, lx, ly, position)
+        check_add_cell_boundary(cells, pt_x, pt_y, lx, ly, r, f32(CELL_LENGTH - r), position)
+    return cells
+
+
+def land_square_contains(cell, px, py):
+    index = low(cell) - 1
+    west, south = CELL_LENGTH * (index >> 3), CELL_LENGTH * (index & 7)
+    return west <= px <= west + CELL_LENGTH and south <= py <= south + CELL_LENGTH   # closed squares
+
+
+def find_cell(position, spheres):
+    """facts §4 on open land: the candidates, then the retail pick (the last cell containing sphere 0's centre)."""
+    cells = outside_cells(position, spheres)
+    if not spheres:
+        return cells, 0
+    sx, sy = spheres[0][0], spheres[0][1]
+    containing = 0
+    for cell in cells:
+        if not 1 <= low(cell) <= 64:
+            continue
+        # the centre re-expressed in the candidate's block frame (GetBlockOffset, float32 subtraction)
+        px = f32(sx - BLOCK_LENGTH * (block_x(cell) - block_x(position)))
+        py = f32(sy - BLOCK_LENGTH * (block_y(cell) - block_y(position)))
+        if land_square_contains(cell, px, py):
+            containing = cell
+    return cells, containing
+
+
+# ---- the protocol --------------------------------------------------------------------------------------------------
+
+def lcoord_answer(lc):
+    return {"ok": lc is not None, "x": lc[0] if lc else 0, "y": lc[1] if lc else 0}
+
+
+def answer(request, ops):
+    op = request.get("op")
+    if op == "hello":
+        if request.get("protocol") != PROTOCOL:
+            return {"error": "only protocol %d is spoken here" % PROTOCOL}
+        name = "python-example" + ("+" + BUG if BUG else "")
+        return {"protocol": PROTOCOL, "name": name, "ops": ops, "pick": "retail"}
+    if op not in ops:
+        return {"error": "op %r not offered" % (op,)}
+    if op == "blockid_to_lcoord":
+        return lcoord_answer(blockid_to_lcoord(read_cell(request["cell"])))
+    if op == "gid_to_lcoord":
+        return lcoord_answer(gid_to_lcoord(read_cell(request["cell"])))
+    if op == "lcoord_to_gid":
+        return {"cell": cell_text(lcoord_to_gid(read_int(request["x"]), read_int(request["y"])))}
+    if op == "inbound_valid_cellid":
+        return {"ok": inbound_valid_cellid(read_cell(request["cell"]))}
+    if op == "get_outside_lcoord":
+        x, y = read_float(request["x"]), read_float(request["y"])
+        return lcoord_answer(get_outside_lcoord(read_cell(request["cell"]), x, y))
+    if op == "adjust_to_outside":
+        ok, cell, x, y = adjust_to_outside(read_cell(request["cell"]), read_float(request["x"]), read_float(request["y"]))
+        return {"ok": ok, "cell": cell_text(cell), "x": float_value(x), "y": float_value(y)}
+    if op == "outside_cells":
+        cells = outside_cells(read_cell(request["cell"]), read_spheres(request["spheres"]))
+        return {"cells": [cell_text(c) for c in cells]}
+    if op == "find_cell":
+        if request.get("scene") is not None:
+            return {"error": "scenes not supported (open land only)"}
+        cells, containing = find_cell(read_cell(request["cell"]), read_spheres(request["spheres"]))
+        return {"cells": [cell_text(c) for c in cells], "containing": cell_text(containing) if containing else None}
+    return {"error": "op %r not implemented" % (op,)}
+
+
+def main():
+    global BUG
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--bug", choices=BUGS, default=os.environ.get("ACPHYS_PY_BUG") or None,
+                        help="switch on a seeded bug (or set ACPHYS_PY_BUG)")
+    parser.add_argument("--ops", help="announce only these ops (comma-separated)")
+    args = parser.parse_args()
+    if args.bug is not None and args.bug not in BUGS:
+        parser.error("unknown bug %r (known: %s)" % (args.bug, ", ".join(BUGS)))
+    BUG = args.bug
+    ops = ALL_OPS if not args.ops else [o for o in args.ops.split(",") if o]
+
+    print("acphys_impl.py: protocol %d, ops %s%s" % (PROTOCOL, ",".join(ops), ", seeded bug " + BUG if BUG else ""),
+          file=sys.stderr, flush=True)
+    while True:
+        line = sys.stdin.readline()      # one line at a time: never wait for more input than one request
+        if not line:
+            break                        # end of input: the tool is done
+        if not line.strip():
+            continue
+        try:
+            reply = answer(json.loads(line), ops)
+        except (BadRequest, KeyError, TypeError, ValueError) as e:
+            reply = {"error": "bad request: %s: %s" % (type(e).__name__, e)}
+        sys.stdout.write(json.dumps(reply, allow_nan=False) + "\n")
+        sys.stdout.flush()
+
+
+BUG = None
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,184 @@
+using System.Collections.Concurrent;
+using System.Diagnostics;
+using System.Globalization;
+using System.Text;
+using AcPhys.Spec.Adapters;
+
+namespace AcPhys.Spec.Protocol;
+
+/// <summary>
+/// A child process spoken to one line at a time over stdin/stdout, with a per-exchange timeout. Its stderr is the
+/// implementation's log: every line goes to a sink (passed through) and the last lines are kept for error messages.
+/// Anything that stops an answer (exit, hang, broken pipe) becomes an <see cref="AdapterFailureException"/>.
+/// </summary>
+internal sealed class LineProcess : IDisposable
+{
+    private const int TailLines = 20;
+
+    private readonly Process process;
+    private readonly string commandLine;
+    private readonly ConcurrentQueue<string> tail = new();
+    private readonly Action<string>? stderrSink;
+    private Task<string?>? pending;
+    private bool dead;
+
+    private LineProcess(Process process, string commandLine, Action<string>? stderrSink)
+    {
+        this.process = process;
+        this.commandLine = commandLine;
+        this.stderrSink = stderrSink;
+    }
+
+    /// <summary>Gets the last lines the child wrote to stderr.</summary>
+    public IReadOnlyList<string> StderrTail => tail.ToArray();
+
+    /// <summary>Starts <paramref name="commandLine"/> through the platform shell.</summary>
+    /// <param name="commandLine">The command line, as typed in a shell.</param>
+    /// <param name="stderrSink">Receives each stderr line of the child, or null to only keep the tail.</param>
+    /// <returns>The running process.</returns>
+    /// <exception cref="AdapterFailureException">It could not be started.</exception>
+    public static LineProcess Start(string commandLine, Action<string>? stderrSink)
+    {
+        var info = OperatingSystem.IsWindows()
+            ? new ProcessStartInfo("cmd.exe") { ArgumentList = { "/d", "/c", commandLine } }
+            : new ProcessStartInfo("/bin/sh") { ArgumentList = { "-c", commandLine } };
+        info.RedirectStandardInput = true;
+        info.RedirectStandardOutput = true;
+        info.RedirectStandardError = true;
+        info.UseShellExecute = false;
+        info.StandardInputEncoding = new UTF8Encoding(false);
+        info.StandardOutputEncoding = new UTF8Encoding(false);
+        info.StandardErrorEncoding = new UTF8Encoding(false);
+
+        var process = new Process { StartInfo = info };
+        var child = new LineProcess(process, commandLine, stderrSink);
+        process.ErrorDataReceived += (_, e) => child.OnStderr(e.Data);
+        try
+        {
+            process.Start();
+        }
+        catch (Exception e) when (e is System.ComponentModel.Win32Exception or InvalidOperationException)
+        {
+            process.Dispose();
+            throw new AdapterFailureException($"could not start '{commandLine}': {e.Message}", e);
+        }
+
+        process.BeginErrorReadLine();
+        process.StandardInput.AutoFlush = true;
+        return child;
+    }
+
+    /// <summary>Sends one line and waits for one answer line.</summary>
+    /// <param name="request">The request line.</param>
+    /// <param name="what">What the request is, for messages (the op name).</param>
+    /// <param name="timeout">How long to wait for the answer.</param>
+    /// <returns>The answer line.</returns>
+    /// <exception cref="AdapterFailureException">The child exited, closed its stdout or did not answer in time.</exception>
+    public string Exchange(string request, string what, TimeSpan timeout)
+    {
+        if (dead)
+        {
+            throw new AdapterFailureException($"'{commandLine}' is no longer running (it failed earlier)");
+        }
+
+        try
+        {
+            process.StandardInput.WriteLine(request);
+        }
+        catch (IOException e)
+        {
+            throw Died($"could not send '{what}' (the pipe is closed)", e);
+        }
+
+        pending ??= process.StandardOutput.ReadLineAsync();
+        bool answered;
+        try
+        {
+            answered = pending.Wait(timeout);
+        }
+        catch (AggregateException e)
+        {
+            throw Died($"reading the answer to '{what}' failed", e.InnerException ?? e);
+        }
+
+        if (!answered)
+        {
+            dead = true;
+            Kill();
+            throw new AdapterFailureException(
+                string.Create(CultureInfo.InvariantCulture, $"'{commandLine}' did not answer '{what}' within {timeout.TotalSeconds:0.###} s (--timeout); it was killed. Request: {Wire.Brief(request, 200)}{TailText()}"));
+        }
+
+        string? line = pending.Result;
+        pending = null;
+        return line ?? throw Died($"closed its stdout instead of answering '{what}'", null);
+    }
+
+    /// <inheritdoc/>
+    public void Dispose()
+    {
+        try
+        {
+            if (!process.HasExited)
+            {
+                process.StandardInput.Close(); // end of input: a well-behaved implementation exits
+                if (!process.WaitForExit(1000))
+                {
+                    Kill();
+                }
+            }
+        }
+        catch (Exception e) when (e is IOException or InvalidOperationException)
+        {
+            Kill();
+        }
+
+        process.Dispose();
+    }
+
+    private AdapterFailureException Died(string what, Exception? inner)
+    {
+        dead = true;
+        string status = process.WaitForExit(2000)
+            ? string.Create(CultureInfo.InvariantCulture, $"exited with code {process.ExitCode}")
+            : "is still running";
+        string message = $"'{commandLine}' {what}; the process {status}{TailText()}";
+        return inner is null ? new AdapterFailureException(message) : new AdapterFailureException(message, inner);
+    }
+
+    private string TailText()
+    {
+        // stderr arrives asynchronously: give the last lines a moment to land before quoting them.
+        Thread.Sleep(50);
+        var lines = tail.ToArray();
+        return lines.Length == 0 ? " (nothing on its stderr)" : $". Last stderr lines:{Environment.NewLine}  " + string.Join(Environment.NewLine + "  ", lines.TakeLast(8));
+    }
+
+    private void Kill()
+    {
+        try
+        {
+            process.Kill(entireProcessTree: true);
+            process.WaitForExit(2000);
+        }
+        catch (Exception e) when (e is InvalidOperationException or System.ComponentModel.Win32Exception or NotSupportedException)
+        {
+            // Already gone.
+        }
+    }
+
+    private void OnStderr(string? line)
+    {
+        if (line is null)
+        {
+            return;
+        }
+
+        tail.Enqueue(line);
+        while (tail.Count > TailLines && tail.TryDequeue(out _))
+        {
+        }
+
+        stderrSink?.Invoke(line);
+    }
+}

@@ -1,0 +1,238 @@
+using System.Text.Json;
+using AcPhys.Core;
+using AcPhys.Spec.Adapters;
+
+namespace AcPhys.Spec.Protocol;
+
+/// <summary>
+/// An implementation in another process, in any language, behind <see cref="ICellPhysics"/>: protocol v1 over the
+/// child's stdin/stdout (docs/protocol.md). A crash, a hang past the timeout or an answer that is not protocol v1 is an
+/// <see cref="AdapterFailureException"/> (exit 2); <c>{"error": ...}</c> to an announced op is a finding.
+/// </summary>
+/// <remarks>Calls are serialised (one request in flight), so the adapter is safe to share between threads.</remarks>
+public sealed class ProcessAdapter : ICellPhysics, IDisposable
+{
+    private readonly LineProcess child;
+    private readonly TimeSpan timeout;
+    private readonly Lock gate = new();
+
+    private ProcessAdapter(LineProcess child, TimeSpan timeout, string name, Op ops, PickPolicy pick, IReadOnlyList<string> unknownOps)
+    {
+        this.child = child;
+        this.timeout = timeout;
+        Name = name;
+        Ops = ops;
+        Pick = pick;
+        UnknownOps = unknownOps;
+    }
+
+    /// <inheritdoc/>
+    public string Name { get; }
+
+    /// <inheritdoc/>
+    public Op Ops { get; }
+
+    /// <inheritdoc/>
+    public PickPolicy Pick { get; }
+
+    /// <summary>Gets op names the implementation announced that protocol v1 does not know (ignored).</summary>
+    public IReadOnlyList<string> UnknownOps { get; }
+
+    /// <summary>Gets the last lines the implementation wrote to stderr.</summary>
+    public IReadOnlyList<string> StderrTail => child.StderrTail;
+
+    /// <summary>Starts the implementation and performs the <c>hello</c> handshake.</summary>
+    /// <param name="commandLine">The command line (run through <c>/bin/sh -c</c>, or <c>cmd /c</c> on Windows).</param>
+    /// <param name="options">Timeout and stderr handling.</param>
+    /// <returns>The adapter.</returns>
+    /// <exception cref="AdapterFailureException">It could not be started or did not complete the handshake.</exception>
+    public static ProcessAdapter Start(string commandLine, ProcessAdapterOptions? options = null)
+    {
+        options ??= new ProcessAdapterOptions();
+        var child = LineProcess.Start(commandLine, options.StderrSink);
+        try
+        {
+            string answer = child.Exchange(
+                Wire.Line(w =>
+                {
+                    w.WriteString("op", "hello");
+                    w.WriteNumber("protocol", Wire.Version);
+                }),
+                "hello",
+                options.Timeout > options.HandshakeTimeout ? options.Timeout : options.HandshakeTimeout);
+            using var doc = ParseAnswer(answer, "hello", commandLine);
+            var hello = doc.RootElement;
+            if (hello.TryGetProperty("error", out var error))
+            {
+                throw new AdapterFailureException($"'{commandLine}' refused the handshake: {Wire.Show(error)}");
+            }
+
+            try
+            {
+                int protocol = Wire.ReadInt(hello, "protocol");
+                if (protocol != Wire.Version)
+                {
+                    throw new AdapterFailureException($"'{commandLine}' speaks protocol {protocol}; this tool speaks {Wire.Version}");
+                }
+
+                string name = hello.TryGetProperty("name", out _) ? Wire.ReadString(hello, "name") : commandLine;
+                var opsField = Wire.Field(hello, "ops");
+                if (opsField.ValueKind != JsonValueKind.Array || opsField.EnumerateArray().Any(e => e.ValueKind != JsonValueKind.String))
+                {
+                    throw new WireException("field \"ops\" must be an array of op names");
+                }
+
+                var ops = OpNames.Parse(opsField.EnumerateArray().Select(e => e.GetString()!), out var unknown);
+                string? pickName = hello.TryGetProperty("pick", out var p) && p.ValueKind != JsonValueKind.Null ? Wire.ReadString(hello, "pick") : null;
+                if (!PickNames.TryParse(pickName, out var pick))
+                {
+                    throw new WireException($"unknown pick \"{pickName}\" (known: retail, current-first)");
+                }
+
+                return new ProcessAdapter(child, options.Timeout, name, ops, pick, unknown);
+            }
+            catch (WireException e)
+            {
+                throw new AdapterFailureException($"'{commandLine}' answered the handshake with something that is not protocol v1: {e.Message}. Answer: {Wire.Brief(answer, 200)}", e);
+            }
+        }
+        catch
+        {
+            child.Dispose();
+            throw;
+        }
+    }
+
+    /// <inheritdoc/>
+    public bool BlockIdToLcoord(CellId id, out Lcoord lcoord) => LcoordAnswer(Op.BlockIdToLcoord, w => Wire.WriteCell(w, "cell", id), out lcoord);
+
+    /// <inheritdoc/>
+    public bool GidToLcoord(CellId id, out Lcoord lcoord) => LcoordAnswer(Op.GidToLcoord, w => Wire.WriteCell(w, "cell", id), out lcoord);
+
+    /// <inheritdoc/>
+    public CellId LcoordToGid(int x, int y) => Call(
+        Op.LcoordToGid,
+        w =>
+        {
+            w.WriteNumber("x", x);
+            w.WriteNumber("y", y);
+        },
+        a => Wire.ReadCell(a, "cell"));
+
+    /// <inheritdoc/>
+    public bool InboundValidCellId(CellId id) => Call(Op.InboundValidCellId, w => Wire.WriteCell(w, "cell", id), a => Wire.ReadBool(a, "ok"));
+
+    /// <inheritdoc/>
+    public bool GetOutsideLcoord(CellId id, float x, float y, out Lcoord lcoord) => LcoordAnswer(
+        Op.GetOutsideLcoord,
+        w =>
+        {
+            Wire.WriteCell(w, "cell", id);
+            Wire.WriteFloat(w, "x", x);
+            Wire.WriteFloat(w, "y", y);
+        },
+        out lcoord);
+
+    /// <inheritdoc/>
+    public AdjustResult AdjustToOutside(CellId id, float x, float y) => Call(
+        Op.AdjustToOutside,
+        w =>
+        {
+            Wire.WriteCell(w, "cell", id);
+            Wire.WriteFloat(w, "x", x);
+            Wire.WriteFloat(w, "y", y);
+        },
+        a => new AdjustResult(Wire.ReadBool(a, "ok"), Wire.ReadCell(a, "cell"), Wire.ReadFloat(a, "x"), Wire.ReadFloat(a, "y")));
+
+    /// <inheritdoc/>
+    public IReadOnlyList<CellId> OutsideCells(CellId cell, IReadOnlyList<Sphere> spheres) => Call(
+        Op.OutsideCells,
+        w =>
+        {
+            Wire.WriteCell(w, "cell", cell);
+            Wire.WriteSpheres(w, "spheres", spheres);
+        },
+        a => Wire.ReadCells(a, "cells"));
+
+    /// <inheritdoc/>
+    public FindCellResult FindCell(CellId cell, IReadOnlyList<Sphere> spheres, CellId current) => Call(
+        Op.FindCell,
+        w =>
+        {
+            // Open land only: scenes (issue #4) are sent here once the scene JSON exists.
+            w.WriteNull("scene");
+            Wire.WriteCell(w, "cell", cell);
+            Wire.WriteSpheres(w, "spheres", spheres);
+            if (current.IsNone)
+            {
+                w.WriteNull("current");
+            }
+            else
+            {
+                Wire.WriteCell(w, "current", current);
+            }
+        },
+        a => new FindCellResult(Wire.ReadCells(a, "cells"), Wire.ReadOptionalCell(a, "containing")));
+
+    /// <inheritdoc/>
+    public IReadOnlyList<CellId> OutsideCellsParts(IReadOnlyList<Part> parts) => Call(
+        Op.OutsideCellsParts,
+        w => PartWire.WriteParts(w, "parts", parts),
+        a => Wire.ReadCells(a, "cells"));
+
+    /// <inheritdoc/>
+    public void Dispose() => child.Dispose();
+
+    private static JsonDocument ParseAnswer(string answer, string op, string who)
+    {
+        try
+        {
+            return Wire.Parse(answer);
+        }
+        catch (WireException e)
+        {
+            throw new AdapterFailureException($"'{who}' answered '{op}' with something that is not protocol v1 ({e.Message}): {Wire.Brief(answer, 200)}", e);
+        }
+    }
+
+    private bool LcoordAnswer(Op op, Action<Utf8JsonWriter> fields, out Lcoord lcoord)
+    {
+        var (ok, x, y) = Call(op, fields, a => (Wire.ReadBool(a, "ok"), Wire.ReadInt(a, "x"), Wire.ReadInt(a, "y")));
+        lcoord = new Lcoord(x, y);
+        return ok;
+    }
+
+    private T Call<T>(Op op, Action<Utf8JsonWriter> fields, Func<JsonElement, T> read)
+    {
+        string name = OpNames.Names(op)[0];
+        if ((Ops & op) == 0)
+        {
+            throw new NotSupportedException($"{Name} does not offer {name}");
+        }
+
+        string request = Wire.Line(w =>
+        {
+            w.WriteString("op", name);
+            fields(w);
+        });
+
+        lock (gate)
+        {
+            string answer = child.Exchange(request, name, timeout);
+            using var doc = ParseAnswer(answer, name, Name);
+            if (doc.RootElement.TryGetProperty("error", out var error))
+            {
+                throw new ImplementationErrorException($"{name} answered error {Wire.Show(error)}");
+            }
+
+            try
+            {
+                return read(doc.RootElement);
+            }
+            catch (WireException e)
+            {
+                throw new AdapterFailureException($"'{Name}' answered '{name}' with something that is not protocol v1: {e.Message}. Request: {Wire.Brief(request, 200)} Answer: {Wire.Brief(answer, 200)}", e);
+            }
+        }
+    }
+}

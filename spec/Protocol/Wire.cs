@@ -1,0 +1,295 @@
+using System.Buffers;
+using System.Globalization;
+using System.Numerics;
+using System.Text;
+using System.Text.Json;
+using AcPhys.Core;
+using AcPhys.Core.Text;
+
+namespace AcPhys.Spec.Protocol;
+
+/// <summary>
+/// The value encoding of protocol v1 (docs/protocol.md): one JSON object per line; cell ids as <c>"0xAABBCCCC"</c>;
+/// coordinates as JSON numbers read as float32, the non-finite ones as the strings <c>"NaN"</c>, <c>"Infinity"</c>,
+/// <c>"-Infinity"</c>; lcoords as JSON integers.
+/// </summary>
+public static class Wire
+{
+    /// <summary>The protocol version this code speaks.</summary>
+    public const int Version = 1;
+
+    private static readonly JsonWriterOptions WriterOptions = new() { Indented = false, Encoder = System.Text.Encodings.Web.JavaScriptEncoder.UnsafeRelaxedJsonEscaping };
+
+    /// <summary>Builds one message line (no newline) with the fields <paramref name="fields"/> writes.</summary>
+    /// <param name="fields">Writes the object's properties.</param>
+    /// <returns>The compact JSON text.</returns>
+    public static string Line(Action<Utf8JsonWriter> fields)
+    {
+        var buffer = new ArrayBufferWriter<byte>(128);
+        using (var writer = new Utf8JsonWriter(buffer, WriterOptions))
+        {
+            writer.WriteStartObject();
+            fields(writer);
+            writer.WriteEndObject();
+        }
+
+        return Encoding.UTF8.GetString(buffer.WrittenSpan);
+    }
+
+    /// <summary>Parses one message line into its root object.</summary>
+    /// <param name="line">The line.</param>
+    /// <returns>The parsed document (dispose it).</returns>
+    /// <exception cref="WireException">Not a JSON object.</exception>
+    public static JsonDocument Parse(string line)
+    {
+        JsonDocument doc;
+        try
+        {
+            doc = JsonDocument.Parse(line);
+        }
+        catch (JsonException e)
+        {
+            throw new WireException("not JSON: " + e.Message, e);
+        }
+
+        if (doc.RootElement.ValueKind != JsonValueKind.Object)
+        {
+            doc.Dispose();
+            throw new WireException($"expected a JSON object, got {doc.RootElement.ValueKind}");
+        }
+
+        return doc;
+    }
+
+    /// <summary>Writes a cell id as <c>"0xAABBCCCC"</c>.</summary>
+    /// <param name="w">The writer.</param>
+    /// <param name="name">The property name.</param>
+    /// <param name="id">The id.</param>
+    public static void WriteCell(Utf8JsonWriter w, string name, CellId id) => w.WriteString(name, CellIdText.Format(id));
+
+    /// <summary>Writes a float32 as the exact JSON number of its value, or a string for the non-finite values.</summary>
+    /// <param name="w">The writer.</param>
+    /// <param name="name">The property name.</param>
+    /// <param name="v">The value.</param>
+    public static void WriteFloat(Utf8JsonWriter w, string name, float v)
+    {
+        w.WritePropertyName(name);
+        WriteFloatValue(w, v);
+    }
+
+    /// <summary>Writes a float32 value (see <see cref="WriteFloat"/>).</summary>
+    /// <param name="w">The writer.</param>
+    /// <param name="v">The value.</param>
+    public static void WriteFloatValue(Utf8JsonWriter w, float v)
+    {
+        if (float.IsNaN(v))
+        {
+            w.WriteStringValue("NaN");
+        }
+        else if (float.IsInfinity(v))
+        {
+            w.WriteStringValue(v > 0 ? "Infinity" : "-Infinity");
+        }
+        else if (v == 0 && float.IsNegative(v))
+        {
+            // Keep the sign of zero visible to readers that parse "-0" as the integer 0.
+            w.WriteRawValue("-0.0");
+        }
+        else
+        {
+            // The double of a float32 is exact, and its shortest round-trip text reads back as the same double in any language.
+            w.WriteNumberValue((double)v);
+        }
+    }
+
+    /// <summary>Writes a list of cell ids.</summary>
+    /// <param name="w">The writer.</param>
+    /// <param name="name">The property name.</param>
+    /// <param name="cells">The ids.</param>
+    public static void WriteCells(Utf8JsonWriter w, string name, IReadOnlyList<CellId> cells)
+    {
+        w.WriteStartArray(name);
+        foreach (var c in cells)
+        {
+            w.WriteStringValue(CellIdText.Format(c));
+        }
+
+        w.WriteEndArray();
+    }
+
+    /// <summary>Writes spheres as <c>[{x,y,z,r}]</c>.</summary>
+    /// <param name="w">The writer.</param>
+    /// <param name="name">The property name.</param>
+    /// <param name="spheres">The spheres.</param>
+    public static void WriteSpheres(Utf8JsonWriter w, string name, IReadOnlyList<Sphere> spheres)
+    {
+        w.WriteStartArray(name);
+        foreach (var s in spheres)
+        {
+            w.WriteStartObject();
+            WriteFloat(w, "x", s.Center.X);
+            WriteFloat(w, "y", s.Center.Y);
+            WriteFloat(w, "z", s.Center.Z);
+            WriteFloat(w, "r", s.Radius);
+            w.WriteEndObject();
+        }
+
+        w.WriteEndArray();
+    }
+
+    /// <summary>Writes a vector as <c>{x,y,z}</c>.</summary>
+    /// <param name="w">The writer.</param>
+    /// <param name="name">The property name.</param>
+    /// <param name="v">The vector.</param>
+    public static void WriteVector(Utf8JsonWriter w, string name, Vector3 v)
+    {
+        w.WriteStartObject(name);
+        WriteFloat(w, "x", v.X);
+        WriteFloat(w, "y", v.Y);
+        WriteFloat(w, "z", v.Z);
+        w.WriteEndObject();
+    }
+
+    /// <summary>Gets a required property.</summary>
+    /// <param name="obj">The object.</param>
+    /// <param name="name">The property name.</param>
+    /// <returns>The value.</returns>
+    /// <exception cref="WireException">The property is missing.</exception>
+    public static JsonElement Field(JsonElement obj, string name) =>
+        obj.ValueKind == JsonValueKind.Object && obj.TryGetProperty(name, out var v) ? v : throw new WireException($"missing field \"{name}\"");
+
+    /// <summary>Reads a cell id field.</summary>
+    /// <param name="obj">The object.</param>
+    /// <param name="name">The property name.</param>
+    /// <returns>The id.</returns>
+    public static CellId ReadCell(JsonElement obj, string name) => CellValue(Field(obj, name), name);
+
+    /// <summary>Reads a cell id field that may be null or absent (<see cref="CellId.None"/> then).</summary>
+    /// <param name="obj">The object.</param>
+    /// <param name="name">The property name.</param>
+    /// <returns>The id.</returns>
+    public static CellId ReadOptionalCell(JsonElement obj, string name) =>
+        obj.TryGetProperty(name, out var v) && v.ValueKind != JsonValueKind.Null ? CellValue(v, name) : CellId.None;
+
+    /// <summary>Reads a list of cell ids.</summary>
+    /// <param name="obj">The object.</param>
+    /// <param name="name">The property name.</param>
+    /// <returns>The ids.</returns>
+    public static CellId[] ReadCells(JsonElement obj, string name)
+    {
+        var array = Field(obj, name);
+        if (array.ValueKind != JsonValueKind.Array)
+        {
+            throw new WireException($"field \"{name}\" must be an array of cell ids");
+        }
+
+        return array.EnumerateArray().Select(e => CellValue(e, name + "[]")).ToArray();
+    }
+
+    /// <summary>Reads a float32 field (a JSON number, or "NaN" / "Infinity" / "-Infinity").</summary>
+    /// <param name="obj">The object.</param>
+    /// <param name="name">The property name.</param>
+    /// <returns>The value.</returns>
+    public static float ReadFloat(JsonElement obj, string name) => FloatValue(Field(obj, name), name);
+
+    /// <summary>Reads an integer field.</summary>
+    /// <param name="obj">The object.</param>
+    /// <param name="name">The property name.</param>
+    /// <returns>The value.</returns>
+    public static int ReadInt(JsonElement obj, string name)
+    {
+        var v = Field(obj, name);
+        return v.ValueKind == JsonValueKind.Number && v.TryGetInt32(out int i) ? i : throw new WireException($"field \"{name}\" must be a 32-bit integer, got {Show(v)}");
+    }
+
+    /// <summary>Reads a boolean field.</summary>
+    /// <param name="obj">The object.</param>
+    /// <param name="name">The property name.</param>
+    /// <returns>The value.</returns>
+    public static bool ReadBool(JsonElement obj, string name)
+    {
+        var v = Field(obj, name);
+        return v.ValueKind switch
+        {
+            JsonValueKind.True => true,
+            JsonValueKind.False => false,
+            _ => throw new WireException($"field \"{name}\" must be true or false, got {Show(v)}"),
+        };
+    }
+
+    /// <summary>Reads a string field.</summary>
+    /// <param name="obj">The object.</param>
+    /// <param name="name">The property name.</param>
+    /// <returns>The value.</returns>
+    public static string ReadString(JsonElement obj, string name)
+    {
+        var v = Field(obj, name);
+        return v.ValueKind == JsonValueKind.String ? v.GetString()! : throw new WireException($"field \"{name}\" must be a string, got {Show(v)}");
+    }
+
+    /// <summary>Reads spheres <c>[{x,y,z,r}]</c>.</summary>
+    /// <param name="obj">The object.</param>
+    /// <param name="name">The property name.</param>
+    /// <returns>The spheres.</returns>
+    public static Sphere[] ReadSpheres(JsonElement obj, string name)
+    {
+        var array = Field(obj, name);
+        if (array.ValueKind != JsonValueKind.Array)
+        {
+            throw new WireException($"field \"{name}\" must be an array of {{x,y,z,r}}");
+        }
+
+        return array.EnumerateArray()
+            .Select(s => new Sphere(new Vector3(ReadFloat(s, "x"), ReadFloat(s, "y"), ReadFloat(s, "z")), ReadFloat(s, "r")))
+            .ToArray();
+    }
+
+    /// <summary>Reads a vector <c>{x,y,z}</c>.</summary>
+    /// <param name="obj">The object.</param>
+    /// <param name="name">The property name.</param>
+    /// <returns>The vector.</returns>
+    public static Vector3 ReadVector(JsonElement obj, string name)
+    {
+        var v = Field(obj, name);
+        return new Vector3(ReadFloat(v, "x"), ReadFloat(v, "y"), ReadFloat(v, "z"));
+    }
+
+    /// <summary>Shows a JSON value briefly, for messages.</summary>
+    /// <param name="v">The value.</param>
+    /// <returns>At most 60 characters of its text.</returns>
+    public static string Show(JsonElement v) => Brief(v.GetRawText(), 60);
+
+    /// <summary>Cuts a text to a length, for messages.</summary>
+    /// <param name="text">The text.</param>
+    /// <param name="max">The most characters to keep.</param>
+    /// <returns>The text, cut with an ellipsis when longer.</returns>
+    public static string Brief(string text, int max) => text.Length <= max ? text : text[..max] + "...";
+
+    private static CellId CellValue(JsonElement v, string name) =>
+        v.ValueKind == JsonValueKind.String && CellIdText.TryParse(v.GetString(), out var id)
+            ? id
+            : throw new WireException($"field \"{name}\" must be a cell id string \"0xAABBCCCC\" (8 hex digits), got {Show(v)}");
+
+    private static float FloatValue(JsonElement v, string name)
+    {
+        switch (v.ValueKind)
+        {
+            case JsonValueKind.Number when v.TryGetDouble(out double d):
+                return (float)d;
+            case JsonValueKind.String:
+                switch (v.GetString())
+                {
+                    case "NaN":
+                        return float.NaN;
+                    case "Infinity":
+                        return float.PositiveInfinity;
+                    case "-Infinity":
+                        return float.NegativeInfinity;
+                }
+
+                break;
+        }
+
+        throw new WireException(string.Create(CultureInfo.InvariantCulture, $"field \"{name}\" must be a number or \"NaN\" / \"Infinity\" / \"-Infinity\", got {Show(v)}"));
+    }
+}
