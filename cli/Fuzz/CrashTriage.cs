@@ -70,8 +70,10 @@ internal sealed class CrashTriage(FuzzSettings s)
             return new TriageGroup(key, signature, count, file, path, ReplayCommand(path), reproduces, known);
         }
 
-        // No stored case format: keep the smallest raw input, named by its content.
-        string raw = Path.Combine(TriageDir, $"{s.Target.Name}-{key}-{Convert.ToHexStringLower(SHA256.HashData(data))[..8]}.bin");
+        // No stored case format: keep the smallest raw input, named by its content; a parser's goes to
+        // <regressions>/parsers, which props (ParserRegressions) replays on every test run.
+        string folder = s.Target.Kind == TargetKind.Parser ? Path.Combine(s.RegressionsDir, "parsers") : TriageDir;
+        string raw = Path.Combine(folder, $"{s.Target.Name}-{key}-{Convert.ToHexStringLower(SHA256.HashData(data))[..8]}.bin");
         bool had = File.Exists(raw);
         AtomicFile.WriteAllBytes(raw, data);
         string replay = $"{(s.Fault is null ? string.Empty : $"ACPHYS_FAULT={s.Fault} ")}{s.Harness} replay {s.Target.Name} {raw}";
