@@ -33,9 +33,10 @@ internal static class FuzzCommand
         var fresh = new Option<bool>("--fresh") { Description = "Wipe the campaign folder first (no resume)." };
         var untilCrash = new Option<bool>("--until-crash") { Description = "Stop at the first crash (time-to-first-crash measurements)." };
         var noBuild = new Option<bool>("--no-build") { Description = "Reuse the instrumented build in .fuzz/build as it is." };
+        var triageOnly = new Option<bool>("--triage-only") { Description = "Do not fuzz: triage the crashes the campaign's sync folder holds (e.g. collected from other machines)." };
         var command = new Command("fuzz", "Run an AFL++ campaign on a fuzz target, then triage crashes into minimised regressions with replay lines.")
         {
-            minutes, jobs, target, fault, quiet, timeout, campaign, regressions, fresh, untilCrash, noBuild,
+            minutes, jobs, target, fault, quiet, timeout, campaign, regressions, fresh, untilCrash, noBuild, triageOnly,
         };
         command.SetAction(parse => Run(() =>
         {
@@ -76,6 +77,7 @@ internal static class FuzzCommand
                 Fresh = parse.GetValue(fresh),
                 UntilCrash = parse.GetValue(untilCrash),
                 NoBuild = parse.GetValue(noBuild),
+                TriageOnly = parse.GetValue(triageOnly),
             };
             return settings;
         }));

@@ -40,7 +40,12 @@ internal sealed class Campaign(FuzzSettings s, CancellationToken stop)
         TimeSpan wall = TimeSpan.Zero;
         TimeSpan? firstCrashWall = seedCrashes > 0 ? TimeSpan.Zero : null;
         string stopped = "every seed fails";
-        if (Directory.EnumerateFiles(seeds).Any())
+        if (s.TriageOnly)
+        {
+            stopped = "--triage-only";
+            stats = Directory.Exists(s.SyncDir) ? Directory.EnumerateDirectories(s.SyncDir).Order(StringComparer.Ordinal).Select(InstanceStats.Read).ToList() : [];
+        }
+        else if (Directory.EnumerateFiles(seeds).Any())
         {
             (stats, wall, var first, stopped) = new CampaignRunner(s, stop).Run(seeds, dictionary, new ProgressView(s.Quiet));
             firstCrashWall ??= first;
@@ -150,9 +155,10 @@ internal sealed class Campaign(FuzzSettings s, CancellationToken stop)
         }
 
         var firstAfl = stats.Where(x => x.FirstCrashMs is not null).OrderBy(x => x.FirstCrashMs).FirstOrDefault();
-        string firstCrash = seedCrashes > 0
-            ? $"0 (found by {seedCrashes} seed(s) before fuzzing)"
-            : firstAfl is not null ? $"{firstAfl.FirstCrashMs / 1000.0:F3} s afl time @ {firstAfl.FirstCrashExecs} execs ({firstAfl.Name}); wall {firstCrashWall?.TotalSeconds:F1} s from start" : "none";
+        string afl = firstAfl is not null
+            ? $"{firstAfl.FirstCrashMs / 1000.0:F3} s afl time @ {firstAfl.FirstCrashExecs} execs ({firstAfl.Name}); wall {firstCrashWall?.TotalSeconds:F1} s from start"
+            : stats.Count > 0 ? "none" : "not fuzzed";
+        string firstCrash = seedCrashes > 0 ? $"0 (found by {seedCrashes} seed(s) before fuzzing); afl from the passing seeds: {afl}" : afl;
         b.AppendLine($"  time to first crash: {firstCrash}");
         b.AppendLine(inv, $"  findings: {groups.Where(g => g.Written is not null).Sum(g => g.Count)} crash input(s) in {groups.Count(g => g.Written is not null)} group(s)");
         foreach (var g in groups)

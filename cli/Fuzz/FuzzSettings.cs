@@ -35,6 +35,9 @@ internal sealed record FuzzSettings(
     /// <summary>Gets a value indicating whether an existing instrumented build is reused as it is.</summary>
     public bool NoBuild { get; init; }
 
+    /// <summary>Gets a value indicating whether afl-fuzz is skipped: only triage (and seed-corpus growth) of what the sync folder holds.</summary>
+    public bool TriageOnly { get; init; }
+
     /// <summary>Gets the sync folder (afl-fuzz -o).</summary>
     public string SyncDir => Path.Combine(CampaignDir, "sync");
 

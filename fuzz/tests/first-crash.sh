@@ -19,11 +19,14 @@ faults=("$@")
     clamp-106 in-cell-neighbours else-diagonal sphere-guard-inverted sphere-leak no-reset no-hysteresis sticky-pick)
 out=$root/.fuzz/first-crash
 mkdir -p "$out"
-echo "| fault | target | median (afl time) | median execs | runs (afl time s @ execs) | regressions (invariant) | replay reproduces |"
-echo "| --- | --- | --- | --- | --- | --- | --- |"
+echo "| fault | target | seeds failing | median afl time | median execs | runs (afl time s @ execs) | regressions (invariant × files) | replay reproduces |"
+echo "| --- | --- | --- | --- | --- | --- | --- | --- |"
 for fault in "${faults[@]}"; do
     target=${target_of[$fault]:?no target for $fault}
     times=() execs=() cells=()
+    seeds=$("$root/.fuzz/build/harness/AcPhys.Fuzz" seeds "$target" "$out/seeds-$target" | sed -n 's/wrote \([0-9]*\).*/\1/p')
+    extra=$( (find "$root/corpus/fuzz/$target" -type f 2>/dev/null || true) | wc -l)
+    seeds=$((seeds + extra))
     regs=$out/$fault/regressions
     rm -rf "${out:?}/$fault"
     for ((i = 1; i <= runs; i++)); do
@@ -32,12 +35,9 @@ for fault in "${faults[@]}"; do
         "$root/acphys" fuzz --target "$target" --fault "$fault" --minutes 5 --until-crash --fresh --no-build --quiet \
             --campaign "$out/$fault/campaign$i" --regressions "$regs" >"$log" 2>&1 || true
         line=$(grep -m1 'time to first crash:' "$log" || echo "time to first crash: none")
-        if [[ $line == *"before fuzzing"* ]]; then
-            t=0 e=0
-        else
-            t=$(sed -n 's/.*first crash: \([0-9.]*\) s afl time @ \([0-9]*\) execs.*/\1/p' <<<"$line")
-            e=$(sed -n 's/.*first crash: \([0-9.]*\) s afl time @ \([0-9]*\) execs.*/\2/p' <<<"$line")
-        fi
+        seeded=$(sed -n 's/.*found by \([0-9]*\) seed.*/\1/p' <<<"$line")
+        t=$(sed -n 's/.* \([0-9.]*\) s afl time @ \([0-9]*\) execs.*/\1/p' <<<"$line")
+        e=$(sed -n 's/.* \([0-9.]*\) s afl time @ \([0-9]*\) execs.*/\2/p' <<<"$line")
         times+=("${t:-inf}") execs+=("${e:-inf}") cells+=("${t:-none}@${e:-none}")
     done
     median_t=$(printf '%s\n' "${times[@]}" | sort -g | sed -n "$(((runs + 1) / 2))p")
@@ -50,5 +50,5 @@ for fault in "${faults[@]}"; do
         "$root/acphys" replay "$f" --fault "$fault" >/dev/null 2>&1 || rc=$?
         ((rc == 1)) && good=$((good + 1))
     done
-    echo "| $fault | $target | $median_t s | $median_e | ${cells[*]} | ${invariants:-none} | $good/$total |"
+    echo "| $fault | $target | ${seeded:-0}/$seeds | $median_t s | $median_e | ${cells[*]} | ${invariants:-none} | $good/$total |"
 done
