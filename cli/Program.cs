@@ -22,6 +22,7 @@ internal static class Program
             BiteCommand.Create(),
             ServeCommand.Create(),
             DiffCommand.Create(),
+            FuzzCommand.Create(),
         };
 
         var parse = root.Parse(args);

@@ -1,13 +1,16 @@
 using AcPhys.Fuzz;
 using AcPhys.Fuzz.Runtime;
+using AcPhys.Fuzz.Targets;
 
-// AcPhys.Fuzz TARGET [INPUT]          serve afl-fuzz (INPUT is afl's @@ file; stdin without it), or run INPUT once
-// AcPhys.Fuzz replay TARGET FILE...   replay saved inputs; exit 1 if any crashes
-// AcPhys.Fuzz seeds TARGET DIR        write the target's seed inputs into DIR
-// AcPhys.Fuzz bench TARGET [N]        time the test alone on N random 17-byte inputs (no afl-fuzz, no pipes)
-// AcPhys.Fuzz list                    list targets
+// AcPhys.Fuzz TARGET [INPUT]            serve afl-fuzz (INPUT is afl's @@ file; stdin without it), or run INPUT once
+// AcPhys.Fuzz replay TARGET FILE...     replay saved inputs; exit 1 if any crashes
+// AcPhys.Fuzz seeds TARGET DIR          write the target's built-in seed inputs into DIR
+// AcPhys.Fuzz dict TARGET FILE          write the target's afl-fuzz dictionary (-x) into FILE (nothing when it has none)
+// AcPhys.Fuzz cmin TARGET SEEDS DIR...  add to SEEDS the inputs of DIR... that cover new tuples (afl-cmin's job)
+// AcPhys.Fuzz bench TARGET [N]          time the test alone on N random 17-byte inputs (no afl-fuzz, no pipes)
+// AcPhys.Fuzz list                      list targets
 // TARGET may also come from ACPHYS_FUZZ_TARGET; the planted fault from ACPHYS_FAULT (unset or empty: correct core).
-const string Usage = "usage: AcPhys.Fuzz TARGET [INPUT] | replay TARGET FILE... | seeds TARGET DIR | bench TARGET [N] | list";
+const string Usage = "usage: AcPhys.Fuzz TARGET [INPUT] | replay TARGET FILE... | seeds TARGET DIR | dict TARGET FILE | cmin TARGET SEEDS DIR... | bench TARGET [N] | list";
 
 string? fault = Environment.GetEnvironmentVariable("ACPHYS_FAULT") is { Length: > 0 } f ? f : null;
 var rest = new Queue<string>(args);
@@ -20,16 +23,16 @@ switch (command)
         return command is null ? 2 : 0;
 
     case "list":
-        foreach (var t in Targets.All)
+        foreach (var t in FuzzTargets.All)
         {
-            Console.WriteLine($"{t.Name,-8} {t.Description}");
+            Console.WriteLine($"{t.Name,-10} {t.Kind.ToString().ToLowerInvariant(),-8} {t.Description}");
         }
 
         return 0;
 
     case "seeds":
         {
-            if (rest.Count != 2 || Targets.Find(rest.Dequeue()) is not { } target)
+            if (rest.Count != 2 || FuzzTargets.Find(rest.Dequeue()) is not { } target)
             {
                 Console.Error.WriteLine(Usage);
                 return 2;
@@ -45,9 +48,36 @@ switch (command)
             return 0;
         }
 
+    case "dict":
+        {
+            if (rest.Count != 2 || FuzzTargets.Find(rest.Dequeue()) is not { } target)
+            {
+                Console.Error.WriteLine(Usage);
+                return 2;
+            }
+
+            // afl dictionary lines: name="value", with \ and " escaped and non-printables as \xNN.
+            var lines = target.Dictionary.Select((token, i) => $"t{i}=\"{string.Concat(token.Select(Escape))}\"");
+            File.WriteAllLines(rest.Dequeue(), lines);
+            return 0;
+        }
+
+    case "cmin":
+        {
+            if (rest.Count < 3 || FuzzTargets.Find(rest.Dequeue()) is not { } target || Create(target, null) is not { } test)
+            {
+                Console.Error.WriteLine(Usage);
+                return 2;
+            }
+
+            string seeds = rest.Dequeue();
+            Cmin.Run(test, seeds, rest, Console.Out);
+            return 0;
+        }
+
     case "bench":
         {
-            if (rest.Count is < 1 or > 2 || Targets.Find(rest.Dequeue()) is not { } target || Create(target, fault) is not { } test)
+            if (rest.Count is < 1 or > 2 || FuzzTargets.Find(rest.Dequeue()) is not { } target || Create(target, fault) is not { } test)
             {
                 Console.Error.WriteLine(Usage);
                 return 2;
@@ -61,7 +91,7 @@ switch (command)
 
     case "replay":
         {
-            if (rest.Count < 2 || Targets.Find(rest.Dequeue()) is not { } target)
+            if (rest.Count < 2 || FuzzTargets.Find(rest.Dequeue()) is not { } target)
             {
                 Console.Error.WriteLine(Usage);
                 return 2;
@@ -84,7 +114,7 @@ switch (command)
 
     default:
         {
-            if (Targets.Find(command) is not { } target)
+            if (FuzzTargets.Find(command) is not { } target)
             {
                 Console.Error.WriteLine($"unknown target '{command}'; try: list");
                 return 2;
@@ -98,7 +128,7 @@ static Action<ReadOnlySpan<byte>>? Create(FuzzTarget target, string? fault)
 {
     try
     {
-        return target.Create(fault);
+        return target.CreateTest(fault);
     }
     catch (ArgumentException e)
     {
@@ -106,3 +136,11 @@ static Action<ReadOnlySpan<byte>>? Create(FuzzTarget target, string? fault)
         return null;
     }
 }
+
+static string Escape(char c) => c switch
+{
+    '\\' => "\\\\",
+    '"' => "\\\"",
+    < ' ' or > '~' => $"\\x{(int)c:X2}",
+    _ => c.ToString(),
+};

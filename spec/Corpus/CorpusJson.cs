@@ -118,7 +118,7 @@ public static class CorpusJson
                 foreach (var item in c.EnumerateArray())
                 {
                     Require(item.ValueKind == JsonValueKind.String, source, $"$.catches[{i}]", "expected a string");
-                    catches.Add(item.GetString()!);
+                    catches.Add(Text(item, source, $"$.catches[{i}]"));
                     i++;
                 }
             }
@@ -200,7 +200,7 @@ public static class CorpusJson
         string path = at + "." + name;
         if (e.ValueKind == JsonValueKind.String)
         {
-            return e.GetString() switch
+            return Text(e, source, path) switch
             {
                 "NaN" => float.NaN,
                 "Infinity" => float.PositiveInfinity,
@@ -231,7 +231,7 @@ public static class CorpusJson
     {
         var e = Prop(parent, name, source, at);
         Require(e.ValueKind == JsonValueKind.String, source, $"{at}.{name}", "expected a string");
-        return e.GetString()!;
+        return Text(e, source, $"{at}.{name}");
     }
 
     private static string? OptStr(JsonElement parent, string name, string source)
@@ -242,7 +242,24 @@ public static class CorpusJson
         }
 
         Require(e.ValueKind == JsonValueKind.String, source, "$." + name, "expected a string");
-        return e.GetString();
+        return Text(e, source, "$." + name);
+    }
+
+    /// <summary>
+    /// Reads a JSON string. JsonDocument accepts strings it cannot turn into .NET text (invalid UTF-8 bytes, a lone
+    /// surrogate escape such as "\ud800") and only GetString throws, with InvalidOperationException; found by the
+    /// walk-json fuzz target. Here that is a format error like any other.
+    /// </summary>
+    internal static string Text(JsonElement e, string source, string path)
+    {
+        try
+        {
+            return e.GetString()!;
+        }
+        catch (InvalidOperationException)
+        {
+            throw new CorpusFormatException($"{source}: {path}: not valid text (invalid UTF-8 or a lone UTF-16 surrogate)");
+        }
     }
 
     internal static void Require(bool condition, string source, string path, string message)

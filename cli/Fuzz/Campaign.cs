@@ -1,0 +1,200 @@
+using System.Globalization;
+using System.Text;
+using AcPhys.Spec.Corpus;
+
+namespace AcPhys.Cli.Fuzz;
+
+/// <summary>
+/// One <c>acphys fuzz</c> run, start to end: afl-fuzz present, harness built and instrumented, seeds (built-in and
+/// the target's growing corpus, <c>corpus/fuzz/TARGET</c>), the afl-fuzz instances, triage into regressions, the
+/// seed corpus grown with new coverage, and a summary (also written to the campaign's <c>summary.txt</c>).
+/// </summary>
+/// <param name="s">The settings.</param>
+/// <param name="stop">Cancelled by Ctrl-C / SIGTERM: afl-fuzz stops, triage still runs.</param>
+internal sealed class Campaign(FuzzSettings s, CancellationToken stop)
+{
+    /// <summary>Runs the campaign.</summary>
+    /// <returns>0 nothing found, 1 findings, 2 the campaign could not run.</returns>
+    public int Run()
+    {
+        if (s.Fresh && Directory.Exists(s.CampaignDir))
+        {
+            Directory.Delete(s.CampaignDir, recursive: true);
+        }
+
+        Directory.CreateDirectory(s.LogDir);
+        AflTools.Ensure(Say);
+        if (AflTools.Which("setpriv") is null)
+        {
+            throw new UsageException("setpriv (util-linux) is needed to stop afl-fuzz when acphys dies; install util-linux");
+        }
+
+        HarnessBuild.Ensure(s, Say);
+        var (seeds, seedCrashes) = PrepareSeeds();
+        string? dictionary = WriteDictionary();
+        bool resumed = Directory.Exists(Path.Combine(s.SyncDir, "main", "queue"));
+        Say($"campaign: target {s.Target.Name}, {(s.Fault is null ? "correct core" : "fault " + s.Fault)}, {s.Jobs} job(s), {s.Seconds} s, "
+            + $"{(resumed ? "resuming " + s.SyncDir : "new sync folder " + s.SyncDir)}");
+
+        IReadOnlyList<InstanceStats> stats = [];
+        TimeSpan wall = TimeSpan.Zero;
+        TimeSpan? firstCrashWall = seedCrashes > 0 ? TimeSpan.Zero : null;
+        string stopped = "every seed fails";
+        if (s.TriageOnly)
+        {
+            stopped = "--triage-only";
+            stats = Directory.Exists(s.SyncDir) ? Directory.EnumerateDirectories(s.SyncDir).Order(StringComparer.Ordinal).Select(InstanceStats.Read).ToList() : [];
+        }
+        else if (Directory.EnumerateFiles(seeds).Any())
+        {
+            (stats, wall, var first, stopped) = new CampaignRunner(s, stop).Run(seeds, dictionary, new ProgressView(s.Quiet));
+            firstCrashWall ??= first;
+            if (stats.All(x => x.Execs == 0))
+            {
+                throw new UsageException($"afl-fuzz did not run; see {s.LogDir}/afl-main.log");
+            }
+        }
+        else
+        {
+            Say("every seed fails on this implementation: the fault is found before fuzzing; afl-fuzz not started");
+        }
+
+        var crashFiles = Directory.Exists(s.SyncDir)
+            ? Directory.EnumerateDirectories(s.SyncDir).SelectMany(d => InstanceStats.CrashFiles(d)).ToList()
+            : [];
+        crashFiles.AddRange(Directory.EnumerateFiles(Path.Combine(s.CampaignDir, "seed-crashes")));
+        Say($"triage: {crashFiles.Count} crash input(s)");
+        var groups = new CrashTriage(s).Run(crashFiles);
+
+        string cmin = GrowSeedCorpus();
+        string summary = Summary(stats, wall, firstCrashWall, stopped, seedCrashes, groups, cmin);
+        AtomicFile.WriteAllText(Path.Combine(s.CampaignDir, "summary.txt"), summary);
+        Console.Out.Write(summary);
+        return groups.Any(g => g.Written is not null) ? ExitCodes.Violated : ExitCodes.Ok;
+    }
+
+    private (string Dir, int Crashing) PrepareSeeds()
+    {
+        string dir = Path.Combine(s.CampaignDir, "seeds");
+        string crashes = Path.Combine(s.CampaignDir, "seed-crashes");
+        foreach (string d in new[] { dir, crashes })
+        {
+            if (Directory.Exists(d))
+            {
+                Directory.Delete(d, recursive: true);
+            }
+
+            Directory.CreateDirectory(d);
+        }
+
+        var all = s.Target.Seeds.Select(kv => (Name: kv.Key, Data: kv.Value)).ToList();
+        if (Directory.Exists(s.SeedCorpusDir))
+        {
+            all.AddRange(Directory.EnumerateFiles(s.SeedCorpusDir).Where(f => !Path.GetFileName(f).StartsWith('.')).Order(StringComparer.Ordinal)
+                .Select(f => (Name: "corpus-" + Path.GetFileName(f), Data: File.ReadAllBytes(f))));
+        }
+
+        int crashing = 0;
+        foreach (var (name, data) in all)
+        {
+            bool fails = s.Target.Classify(data, s.Fault) is not null;
+            crashing += fails ? 1 : 0;
+            File.WriteAllBytes(Path.Combine(fails ? crashes : dir, name), data);
+        }
+
+        Say($"seeds: {all.Count} ({s.Target.Seeds.Count} built in, {all.Count - s.Target.Seeds.Count} from {Path.GetRelativePath(s.Root, s.SeedCorpusDir)}), {crashing} fail already");
+        return (dir, crashing);
+    }
+
+    private string? WriteDictionary()
+    {
+        if (s.Target.Dictionary.Count == 0)
+        {
+            return null;
+        }
+
+        string path = Path.Combine(s.CampaignDir, "dictionary.txt");
+        var (code, output) = AflTools.Run(s.Harness, "dict", s.Target.Name, path);
+        if (code != 0)
+        {
+            throw new UsageException($"harness dict failed: {output.Trim()}");
+        }
+
+        return path;
+    }
+
+    // Only correct-core campaigns feed the seed corpus: their queue is what the real code does.
+    private string GrowSeedCorpus()
+    {
+        if (s.Fault is not null || s.Target.Kind == AcPhys.Fuzz.Targets.TargetKind.Smoke || !Directory.Exists(s.SyncDir))
+        {
+            return "seed corpus: unchanged (only correct-core campaigns of physics and parser targets feed it)";
+        }
+
+        var queues = Directory.EnumerateDirectories(s.SyncDir).Select(d => Path.Combine(d, "queue")).Where(Directory.Exists).ToArray();
+        var (code, output) = AflTools.Run(s.Harness, ["cmin", s.Target.Name, s.SeedCorpusDir, .. queues], new Dictionary<string, string> { ["ACPHYS_FAULT"] = string.Empty });
+        return code == 0 ? "seed corpus: " + output.Trim() : $"seed corpus: cmin failed ({code}): {output.Trim()}";
+    }
+
+    private string Summary(IReadOnlyList<InstanceStats> stats, TimeSpan wall, TimeSpan? firstCrashWall, string stopped, int seedCrashes, IReadOnlyList<TriageGroup> groups, string cmin)
+    {
+        var b = new StringBuilder();
+        var inv = CultureInfo.InvariantCulture;
+        b.AppendLine(inv, $"fuzz summary: target {s.Target.Name}, {(s.Fault is null ? "correct core" : "fault " + s.Fault)}, {s.Jobs} job(s), -V {s.Seconds} s, stopped by {stopped}, wall {wall.TotalSeconds:F0} s");
+        b.AppendLine(inv, $"  machine: {Environment.ProcessorCount} cores, load average {LoadAverage()}");
+        b.AppendLine(inv, $"  {"instance",-8} {"execs",12} {"exec/s",8} {"paths",6} {"crashes",7} {"hangs",5} {"stability",9}  first crash (afl time@execs)");
+        foreach (var x in stats)
+        {
+            string first = x.FirstCrashMs is long ms ? $"{ms / 1000.0:F3} s @ {x.FirstCrashExecs}" : "-";
+            b.AppendLine(inv, $"  {x.Name,-8} {x.Execs,12} {x.ExecsPerSec,8:F0} {x.Paths,6} {x.Crashes,7} {x.Hangs,5} {x.Stability,9}  {first}");
+        }
+
+        if (stats.Count > 1)
+        {
+            b.AppendLine(inv, $"  {"total",-8} {stats.Sum(x => x.Execs),12} {stats.Sum(x => x.ExecsPerSec),8:F0}");
+        }
+
+        var firstAfl = stats.Where(x => x.FirstCrashMs is not null).OrderBy(x => x.FirstCrashMs).FirstOrDefault();
+        string afl = firstAfl is not null
+            ? $"{firstAfl.FirstCrashMs / 1000.0:F3} s afl time @ {firstAfl.FirstCrashExecs} execs ({firstAfl.Name}); wall {firstCrashWall?.TotalSeconds:F1} s from start"
+            : stats.Count > 0 ? "none" : "not fuzzed";
+        string firstCrash = seedCrashes > 0 ? $"0 (found by {seedCrashes} seed(s) before fuzzing); afl from the passing seeds: {afl}" : afl;
+        b.AppendLine($"  time to first crash: {firstCrash}");
+        b.AppendLine(inv, $"  findings: {groups.Where(g => g.Written is not null).Sum(g => g.Count)} crash input(s) in {groups.Count(g => g.Written is not null)} group(s)");
+        foreach (var g in groups)
+        {
+            b.AppendLine(inv, $"  - {g.Key} x{g.Count}: {g.Signature}");
+            if (g.Written is not null)
+            {
+                b.AppendLine(inv, $"      {(g.Known ? "known" : "new")}: {Shown(g.Written)}{(g.Reproduces ? string.Empty : "  (NOT reproduced by replay: not written)")}");
+                b.AppendLine(inv, $"      replay: {g.Replay}");
+            }
+        }
+
+        b.AppendLine(inv, $"  {cmin}");
+        b.AppendLine(inv, $"  campaign folder: {s.CampaignDir} (the next run resumes its queue; --fresh starts over)");
+        return b.ToString();
+    }
+
+    private string Shown(string path) => Path.GetRelativePath(s.Root, path) is var rel && !rel.StartsWith("..", StringComparison.Ordinal) ? rel : path;
+
+    private static string LoadAverage()
+    {
+        try
+        {
+            return string.Join(' ', File.ReadAllText("/proc/loadavg").Split(' ').Take(3));
+        }
+        catch (IOException)
+        {
+            return "unknown";
+        }
+    }
+
+    private void Say(string line)
+    {
+        if (!s.Quiet)
+        {
+            Console.Error.WriteLine("[fuzz] " + line);
+        }
+    }
+}

@@ -1,0 +1,116 @@
+using System.Security.Cryptography;
+using AcPhys.Cli.Replay;
+using AcPhys.Cli.Verify;
+using AcPhys.Fuzz.Targets;
+using AcPhys.Spec.Corpus;
+using AcPhys.Spec.Invariants;
+
+namespace AcPhys.Cli.Fuzz;
+
+/// <summary>
+/// Turns a campaign's crash files into regressions: re-runs every crash, groups them by (invariant ID, signature),
+/// shrinks the smallest input of each group with the properties' shrinker, and writes
+/// <c>&lt;INVARIANT&gt;-&lt;hash&gt;.json</c> atomically after checking that <c>acphys replay</c> reproduces it. Findings that
+/// are not invariant violations (parser targets, stray exceptions) keep their smallest raw input.
+/// </summary>
+/// <param name="s">The settings.</param>
+internal sealed class CrashTriage(FuzzSettings s)
+{
+    /// <summary>Gets the folder where raw inputs of non-physics findings and the triage report go.</summary>
+    public string TriageDir => Path.Combine(s.CampaignDir, "triage");
+
+    /// <summary>Triages crash files.</summary>
+    /// <param name="crashFiles">The inputs that crashed.</param>
+    /// <returns>The groups, biggest first.</returns>
+    public IReadOnlyList<TriageGroup> Run(IReadOnlyList<string> crashFiles)
+    {
+        var findings = new List<(string File, byte[] Data, Finding Finding)>();
+        int gone = 0;
+        foreach (string file in crashFiles)
+        {
+            byte[] data = File.ReadAllBytes(file);
+            if (s.Target.Classify(data, s.Fault) is { } finding)
+            {
+                findings.Add((file, data, finding));
+            }
+            else
+            {
+                gone++;
+            }
+        }
+
+        var groups = new List<TriageGroup>();
+        foreach (var g in findings.GroupBy(f => (f.Finding.Key, f.Finding.Signature)).OrderByDescending(g => g.Count()))
+        {
+            var smallest = g.OrderBy(f => f.Data.Length).ThenBy(f => f.File, StringComparer.Ordinal).First();
+            groups.Add(Settle(g.Key.Key, g.Key.Signature, g.Count(), smallest.File, smallest.Data, smallest.Finding));
+        }
+
+        if (gone > 0)
+        {
+            groups.Add(new TriageGroup("(does not reproduce)", "the input passes when run again", gone, string.Empty, null, null, false, false));
+        }
+
+        return groups;
+    }
+
+    private TriageGroup Settle(string key, string signature, int count, string file, byte[] data, Finding finding)
+    {
+        string origin = $"afl {s.Target.Name} {Path.GetFileName(Path.GetDirectoryName(Path.GetDirectoryName(file)))}/{Path.GetFileName(file)} hex:{Hex(data)}";
+        if (finding.IsViolation && s.Target.Minimise(finding, s.Fault, origin) is { } entry)
+        {
+            string path = Path.Combine(s.RegressionsDir, FailureFile.NameFor(entry));
+            bool known = File.Exists(path);
+            bool reproduces = Reproduces(entry);
+            if (!known && reproduces)
+            {
+                AtomicFile.WriteAllText(path, CorpusJson.Write(entry));
+            }
+
+            return new TriageGroup(key, signature, count, file, path, ReplayCommand(path), reproduces, known);
+        }
+
+        // No stored case format: keep the smallest raw input, named by its content; a parser's goes to
+        // <regressions>/parsers, which props (ParserRegressions) replays on every test run.
+        string folder = s.Target.Kind == TargetKind.Parser ? Path.Combine(s.RegressionsDir, "parsers") : TriageDir;
+        string raw = Path.Combine(folder, $"{s.Target.Name}-{key}-{Convert.ToHexStringLower(SHA256.HashData(data))[..8]}.bin");
+        bool had = File.Exists(raw);
+        AtomicFile.WriteAllBytes(raw, data);
+        string replay = $"{(s.Fault is null ? string.Empty : $"ACPHYS_FAULT={s.Fault} ")}{s.Harness} replay {s.Target.Name} {raw}";
+        return new TriageGroup(key, signature, count, file, raw, replay, true, had);
+    }
+
+    // The file must fail the same way in `acphys replay` (the same checks replay runs), under the campaign's fault.
+    private bool Reproduces(CorpusEntry entry)
+    {
+        var impl = Implementations.For(s.Fault);
+        return entry.Walk is { } walk
+            ? WalkReplay.Check(impl, walk).FirstViolatingStep is not null
+            : InvariantCatalogue.CheckLandCase(impl, entry.Case!.Value) is not null;
+    }
+
+    private string ReplayCommand(string path)
+    {
+        string rel = Path.GetRelativePath(s.Root, path);
+        var words = new List<string> { ReplayLine.Program, "replay", rel.StartsWith("..", StringComparison.Ordinal) ? path : rel };
+        if (s.Fault is not null)
+        {
+            words.AddRange(["--fault", s.Fault]);
+        }
+
+        return string.Join(' ', words.Select(ReplayLine.Quote));
+    }
+
+    private static string Hex(byte[] data) => data.Length <= 128 ? Convert.ToHexStringLower(data) : Convert.ToHexStringLower(data.AsSpan(0, 128)) + "…";
+}
+
+/// <summary>One group of crashes with the same invariant ID (or exception type) and signature.</summary>
+/// <param name="Key">Invariant ID or exception type.</param>
+/// <param name="Signature">The masked message.</param>
+/// <param name="Count">How many crash files.</param>
+/// <param name="Smallest">The smallest crash file.</param>
+/// <param name="Written">The regression (or raw input) file, or null.</param>
+/// <param name="Replay">The command that replays it, or null.</param>
+/// <param name="Reproduces">Whether the written file was seen to reproduce.</param>
+/// <param name="Known">Whether the file existed before (a known finding).</param>
+internal sealed record TriageGroup(string Key, string Signature, int Count, string Smallest, string? Written, string? Replay, bool Reproduces, bool Known);

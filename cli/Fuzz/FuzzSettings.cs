@@ -1,0 +1,57 @@
+using AcPhys.Fuzz.Targets;
+
+namespace AcPhys.Cli.Fuzz;
+
+/// <summary>What one <c>acphys fuzz</c> campaign does.</summary>
+/// <param name="Root">The checkout.</param>
+/// <param name="Target">The fuzz target.</param>
+/// <param name="Fault">The planted fault, or null for the correct core.</param>
+/// <param name="Seconds">How long afl-fuzz fuzzes (afl-fuzz -V).</param>
+/// <param name="Jobs">afl-fuzz instances: one -M main and Jobs − 1 -S secondaries on one sync folder.</param>
+/// <param name="TimeoutMs">afl-fuzz -t.</param>
+/// <param name="CampaignDir">The campaign folder (build-independent; kept between runs so the next run resumes).</param>
+/// <param name="RegressionsDir">Where triage writes minimised regressions.</param>
+/// <param name="SeedCorpusDir">The target's growing seed corpus (corpus/fuzz/TARGET).</param>
+internal sealed record FuzzSettings(
+    string Root,
+    FuzzTarget Target,
+    string? Fault,
+    int Seconds,
+    int Jobs,
+    int TimeoutMs,
+    string CampaignDir,
+    string RegressionsDir,
+    string SeedCorpusDir)
+{
+    /// <summary>Gets a value indicating whether only the summary is printed (CI).</summary>
+    public bool Quiet { get; init; }
+
+    /// <summary>Gets a value indicating whether the campaign's previous queue and findings are wiped first.</summary>
+    public bool Fresh { get; init; }
+
+    /// <summary>Gets a value indicating whether the campaign stops at the first crash (time-to-first-crash measurements).</summary>
+    public bool UntilCrash { get; init; }
+
+    /// <summary>Gets a value indicating whether an existing instrumented build is reused as it is.</summary>
+    public bool NoBuild { get; init; }
+
+    /// <summary>Gets a value indicating whether afl-fuzz is skipped: only triage (and seed-corpus growth) of what the sync folder holds.</summary>
+    public bool TriageOnly { get; init; }
+
+    /// <summary>Gets the sync folder (afl-fuzz -o).</summary>
+    public string SyncDir => Path.Combine(CampaignDir, "sync");
+
+    /// <summary>Gets the folder of logs.</summary>
+    public string LogDir => Path.Combine(CampaignDir, "logs");
+
+    /// <summary>Gets the instrumented build (shared by campaigns: <c>.fuzz/build</c>).</summary>
+    public string BuildDir => Path.Combine(Root, ".fuzz", "build");
+
+    /// <summary>Gets the harness executable.</summary>
+    public string Harness => Path.Combine(BuildDir, "harness", "AcPhys.Fuzz");
+
+    /// <summary>Gets the name of an instance: main, sec1, sec2, …</summary>
+    /// <param name="i">Index.</param>
+    /// <returns>The name.</returns>
+    public static string InstanceName(int i) => i == 0 ? "main" : $"sec{i}";
+}

@@ -1,0 +1,73 @@
+using AcPhys.Spec.Corpus;
+
+namespace AcPhys.Fuzz.Targets;
+
+/// <summary>
+/// A fuzz target: a name, its seeds, the test afl-fuzz drives, and how a crash is classified and minimised.
+/// Every concrete subclass in this assembly is a target (<see cref="FuzzTargets.All"/> finds them by reflection),
+/// so adding a target is adding one file.
+/// </summary>
+public abstract class FuzzTarget
+{
+    /// <summary>Gets the name given on the command line (<c>--target</c>).</summary>
+    public abstract string Name { get; }
+
+    /// <summary>Gets one line for listings.</summary>
+    public abstract string Description { get; }
+
+    /// <summary>Gets what the target exercises.</summary>
+    public abstract TargetKind Kind { get; }
+
+    /// <summary>Gets the built-in seed inputs, by file name.</summary>
+    public abstract IReadOnlyDictionary<string, byte[]> Seeds { get; }
+
+    /// <summary>Gets tokens for afl-fuzz's <c>-x</c> dictionary (empty: none).</summary>
+    public virtual IReadOnlyList<string> Dictionary => [];
+
+    /// <summary>Gets a value indicating whether the target can run against a planted fault.</summary>
+    public bool TakesFaults => Kind == TargetKind.Physics;
+
+    /// <summary>Builds the test: it throws on a bug, returns on a pass.</summary>
+    /// <param name="fault">A planted fault id, or null for the correct core.</param>
+    /// <returns>The test.</returns>
+    /// <exception cref="ArgumentException">The fault is unknown, or the target takes no faults.</exception>
+    public abstract Action<ReadOnlySpan<byte>> CreateTest(string? fault);
+
+    /// <summary>Runs one input again and says what fails, or null when it passes.</summary>
+    /// <param name="input">The input.</param>
+    /// <param name="fault">The planted fault the campaign ran, or null.</param>
+    /// <returns>The finding, or null.</returns>
+    public virtual Finding? Classify(byte[] input, string? fault)
+    {
+        var test = CreateTest(fault);
+        try
+        {
+            test(input);
+            return null;
+        }
+#pragma warning disable CA1031 // Classifying any escaping exception is the point.
+        catch (Exception e)
+#pragma warning restore CA1031
+        {
+            return new Finding(e.GetType().Name, Signatures.Of(e), e.Message, null);
+        }
+    }
+
+    /// <summary>Shrinks a finding to a minimal stored case, or returns null when the target has no case format.</summary>
+    /// <param name="finding">A finding of this target.</param>
+    /// <param name="fault">The planted fault the campaign ran, or null.</param>
+    /// <param name="origin">Where the input came from (written into the entry's <c>seed</c> field).</param>
+    /// <returns>The entry (title, invariant, case, the fault in <c>catches</c>), or null.</returns>
+    public virtual CorpusEntry? Minimise(Finding finding, string? fault, string origin) => null;
+
+    /// <summary>Rejects a fault id for targets that take none.</summary>
+    /// <param name="fault">The fault id.</param>
+    /// <exception cref="ArgumentException">A fault was given.</exception>
+    protected void NoFault(string? fault)
+    {
+        if (fault is not null)
+        {
+            throw new ArgumentException($"target {Name} takes no planted fault (got '{fault}')", nameof(fault));
+        }
+    }
+}
