@@ -19,6 +19,7 @@ internal static class Program
             FaultsCommand.Create(),
             ReplayCommand.Create(),
             RenderCommand.Create(),
+            TradeoffsCommand.Create(),
         };
 
         var parse = root.Parse(args);

@@ -15,11 +15,21 @@ public sealed record PrecisionComparison(bool CellsDiffer, bool PickDiffers, IRe
     /// <summary>Gets a value indicating whether the answers agree.</summary>
     public bool Agrees => !CellsDiffer && !PickDiffers;
 
-    /// <summary>Gets a value indicating whether a disagreement is explained by a rounding the query meets (true when they agree).</summary>
-    public bool Explained => Agrees || Roundings.Count > 0;
+    /// <summary>
+    /// Gets a value indicating whether a disagreement is explained (true when they agree): a different cell set only by
+    /// a re-base or 24 − r rounding, a different pick over the same cells only by the pick's re-framing rounding.
+    /// </summary>
+    public bool Explained => Reason != "unexplained";
 
-    /// <summary>Gets the first explaining rounding, "none" when they agree, or "unexplained".</summary>
-    public string Reason => Agrees ? "none" : Roundings.Count > 0 ? Roundings[0] : "unexplained";
+    /// <summary>Gets the explaining rounding (max-rad before rebase for the cells; reframe for the pick), "none" when they agree, or "unexplained".</summary>
+    public string Reason => (CellsDiffer, PickDiffers) switch
+    {
+        (false, false) => "none",
+        (true, _) when Roundings.Contains(Rounding.MaxRad) => Rounding.MaxRad,
+        (true, _) when Roundings.Contains(Rounding.Rebase) => Rounding.Rebase,
+        (false, true) when Roundings.Contains(Rounding.Reframe) => Rounding.Reframe,
+        _ => "unexplained",
+    };
 }
 
 /// <summary>Compares an implementation's outdoor answer (cells and retail pick) with <see cref="ExactOutdoor"/>.</summary>
