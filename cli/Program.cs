@@ -20,6 +20,7 @@ internal static class Program
             ReplayCommand.Create(),
             RenderCommand.Create(),
             TradeoffsCommand.Create(),
+            BenchCommand.Create(),
         };
 
         var parse = root.Parse(args);
