@@ -29,8 +29,16 @@ internal static class Markdown
     /// <param name="part">The part.</param>
     /// <param name="whole">The whole.</param>
     /// <returns>The text, "—" when the whole is 0.</returns>
-    public static string Pct(long part, long whole) =>
-        whole == 0 ? "—" : (100.0 * part / whole).ToString(part == 0 ? "0" : "0.###", CultureInfo.InvariantCulture) + " %";
+    public static string Pct(long part, long whole)
+    {
+        if (whole == 0)
+        {
+            return "—";
+        }
+
+        double pct = 100.0 * part / whole;
+        return pct.ToString(part == 0 ? "0" : pct < 0.001 ? "0.##E+0" : "0.###", CultureInfo.InvariantCulture) + " %";
+    }
 
     /// <summary>Formats a double in round-trip form.</summary>
     /// <param name="v">The value.</param>

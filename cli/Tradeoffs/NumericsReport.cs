@@ -41,14 +41,18 @@ internal static class NumericsReport
         }
 
         Terminal.Line();
-        Terminal.Line("**Re-base v − 192·⌊v/192⌋ in float32, every float32 of each binade** (|v| ≥ EPS):");
+        Terminal.Line("**Re-base v − 192·⌊v/192⌋ in float32, every negative float32 of each binade** (|v| ≥ EPS):");
         Terminal.Line();
+        var binades = TieBands.RebaseByBinade();
         Table(
             ["v", "floats", "re-base inexact", "rounds onto a line (tie)"],
-            TieBands.RebaseByBinade().Select(b => (IReadOnlyList<string>)
+            binades.Where(b => b.Negative).Select(b => (IReadOnlyList<string>)
             [
-                $"{(b.Negative ? "−" : "+")}[{R(b.Low)}, {R(b.High)})", N(b.Floats), $"{N(b.Inexact)} ({Pct(b.Inexact, b.Floats)})", $"{N(b.OntoLine)} ({Pct(b.OntoLine, b.Floats)})",
+                $"−[{R(b.Low)}, {R(b.High)})", N(b.Floats), $"{N(b.Inexact)} ({Pct(b.Inexact, b.Floats)})", $"{N(b.OntoLine)} ({Pct(b.OntoLine, b.Floats)})",
             ]));
+        var positive = binades.Where(b => !b.Negative).ToList();
+        Terminal.Line($"Positive v, same binades: {N(positive.Sum(b => b.Floats))} floats, {N(positive.Sum(b => b.Inexact))} inexact, {N(positive.Sum(b => b.OntoLine))} ties.");
+        Terminal.Line();
 
         Terminal.Line("**Tie band below each line, seen from the east/north neighbour's frame** (consecutive floats below `line − 192` whose re-base rounds onto the line):");
         Terminal.Line();
