@@ -23,14 +23,14 @@ public class LandDefsBenchmarks
     {
         var id = cell;
         double x = 150, y = -0.5;
-        LandDefs.AdjustToOutside(ref id, ref x, ref y);
+        LandDefs.AdjustToOutsideInDouble(ref id, ref x, ref y);
         return id;
     }
 
     [Benchmark(Description = "GetOutsideLcoord, double reference")]
     public Lcoord GetOutsideLcoordDouble()
     {
-        LandDefs.GetOutsideLcoord(cell, 150.0, -0.5, out var lc);
+        LandDefs.GetOutsideLcoordInDouble(cell, 150.0, -0.5, out var lc);
         return lc;
     }
 

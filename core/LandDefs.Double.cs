@@ -1,6 +1,6 @@
 namespace AcPhys.Core;
 
-/// <summary>The double-precision reference of the LandDefs cell math (<see cref="OutdoorPrecision.Double"/>).</summary>
+/// <summary>The double-precision reference of the LandDefs cell math (<see cref="OutdoorPrecision.Double"/>); named apart from the float32 functions so no call (or reflection lookup) picks one for the other.</summary>
 public static partial class LandDefs
 {
     /// <summary>Returns the lcoord of the 24 m column containing a block-frame point given in double: as the float32 overload, floor toward −∞.</summary>
@@ -9,7 +9,7 @@ public static partial class LandDefs
     /// <param name="y">Block-frame y.</param>
     /// <param name="lcoord">The lcoord, or (0, 0) on failure.</param>
     /// <returns>False for an out-of-range low word, a 0xFF block byte, a non-finite coordinate, or a result off the map.</returns>
-    public static bool GetOutsideLcoord(CellId id, double x, double y, out Lcoord lcoord)
+    public static bool GetOutsideLcoordInDouble(CellId id, double x, double y, out Lcoord lcoord)
     {
         lcoord = default;
         if (!CellInRange(id.Low) || !BlockIdToLcoord(id, out var block))
@@ -36,7 +36,7 @@ public static partial class LandDefs
     /// <param name="x">Block-frame x; |x| &lt; EPS snaps to 0; on success re-based into [0, 192).</param>
     /// <param name="y">Block-frame y; as x.</param>
     /// <returns>As the float32 overload.</returns>
-    public static bool AdjustToOutside(ref CellId id, ref double x, ref double y)
+    public static bool AdjustToOutsideInDouble(ref CellId id, ref double x, ref double y)
     {
         if (!CellInRange(id.Low))
         {
@@ -54,7 +54,7 @@ public static partial class LandDefs
             y = 0;
         }
 
-        if (!GetOutsideLcoord(id, x, y, out var lcoord))
+        if (!GetOutsideLcoordInDouble(id, x, y, out var lcoord))
         {
             id = CellId.None;
             return false;

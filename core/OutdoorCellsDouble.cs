@@ -21,7 +21,7 @@ internal static class OutdoorCellsDouble
         {
             var id = position;
             double cx = sphere.Center.X, cy = sphere.Center.Y;
-            if (!LandDefs.AdjustToOutside(ref id, ref cx, ref cy))
+            if (!LandDefs.AdjustToOutsideInDouble(ref id, ref cx, ref cy))
             {
                 break;
             }
@@ -41,7 +41,7 @@ internal static class OutdoorCellsDouble
     {
         double ox = origin.X, oy = origin.Y;
         lcoord = default;
-        return LandDefs.AdjustToOutside(ref position, ref ox, ref oy) && LandDefs.GidToLcoord(position, out lcoord);
+        return LandDefs.AdjustToOutsideInDouble(ref position, ref ox, ref oy) && LandDefs.GidToLcoord(position, out lcoord);
     }
 
     // check_add_cell_boundary with p > 24 − r written as (p − 24) > −r: p − 24 is exact in double (p has at most

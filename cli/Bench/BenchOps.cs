@@ -79,7 +79,7 @@ internal static class BenchOps
         {
             var id = Cell;
             double x = XsDouble[i & 7], y = XsDouble[(i + 1) & 7];
-            LandDefs.AdjustToOutside(ref id, ref x, ref y);
+            LandDefs.AdjustToOutsideInDouble(ref id, ref x, ref y);
             sum += id.Value;
         }
 
@@ -103,7 +103,7 @@ internal static class BenchOps
         long sum = 0;
         for (int i = 0; i < n; i++)
         {
-            LandDefs.GetOutsideLcoord(Cell, XsDouble[i & 7], XsDouble[(i + 1) & 7], out var lc);
+            LandDefs.GetOutsideLcoordInDouble(Cell, XsDouble[i & 7], XsDouble[(i + 1) & 7], out var lc);
             sum += lc.X;
         }
 

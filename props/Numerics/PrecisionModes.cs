@@ -77,9 +77,9 @@ public sealed class PrecisionModes(ITestOutputHelper output)
 
         double x = -0.0001, y = 0;
         var id = new CellId(0x00000001);
-        Assert.True(LandDefs.AdjustToOutside(ref id, ref x, ref y)); // snapped into block 0, not off the map
+        Assert.True(LandDefs.AdjustToOutsideInDouble(ref id, ref x, ref y)); // snapped into block 0, not off the map
         Assert.Equal(new CellId(0x00000001), id);
         x = -0.001;
-        Assert.False(LandDefs.AdjustToOutside(ref id, ref x, ref y));
+        Assert.False(LandDefs.AdjustToOutsideInDouble(ref id, ref x, ref y));
     }
 }
