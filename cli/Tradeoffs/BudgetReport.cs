@@ -21,7 +21,7 @@ internal static class BudgetReport
     /// <param name="seeds">Independent seeds per fault.</param>
     /// <param name="maxCases">The cap in cases per invariant.</param>
     /// <param name="outDir">Where the CSV files go, or null for none.</param>
-    /// <param name="fuzzCsv">docs/tradeoffs/fuzz-first-crash.csv (fault,target,seconds,execs,source), or null.</param>
+    /// <param name="fuzzCsv">docs/tradeoffs/fuzz-first-crash.csv (fault,target,seconds,execs,source; seconds "&gt;S" = no crash in S seconds), or null.</param>
     /// <returns>0.</returns>
     public static int Run(int seeds, int maxCases, string? outDir, string? fuzzCsv)
     {
@@ -136,7 +136,9 @@ internal static class BudgetReport
                 throw new UsageException($"{path}: expected fault,target,seconds,execs[,source], got '{line}'");
             }
 
-            map[cells[0]] = $"{cells[2]} s @ {cells[3]} execs ({cells[1]})";
+            map[cells[0]] = cells[2].StartsWith('>')
+                ? $"no crash in {cells[2][1..]} s, {cells[3]} execs ({cells[1]})"
+                : $"{cells[2]} s @ {cells[3]} execs ({cells[1]})";
         }
 
         return map;

@@ -22,7 +22,7 @@ do for [fmt in "svg png"] {
     set xlabel "generated cases per invariant (pr = 5,000, nightly = 200,000)"
     set arrow 1 from 5000, graph 0 to 5000, graph 1 nohead dt 2 lc rgb "gray40"
     plot for [f in faults] "< grep '^".f.",' ".csv using 2:4 with linespoints pt 7 ps 0.5 title f, \
-         fuzz using 4:(1.0) with points pt 9 ps 1.3 lc rgb "black" title "AFL++ first crash (execs)"
+         fuzz using 4:(valid(3) ? 1.0 : NaN) with points pt 9 ps 1.3 lc rgb "black" title "AFL++ first crash (execs)"
     unset arrow 1
     set size 0.6,0.95
     set origin 0.4,0.0

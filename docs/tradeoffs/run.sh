@@ -17,6 +17,7 @@ write() { # write FILE: stdin to FILE atomically
   local tmp
   tmp="$(mktemp "$1.XXXXXX")"
   cat > "$tmp"
+  chmod 644 "$tmp"
   mv -f "$tmp" "$1"
 }
 
