@@ -16,6 +16,7 @@ do for [fmt in "svg png"] {
     if (fmt eq "png") { set terminal pngcairo size 1300,560 font "sans,10" ; set output dir."/budget-curve.png" }
     set multiplot title "Planted faults: detection probability against the verification budget (20 fresh seeds; lines = suite, triangles = AFL++)"
     set logscale x
+    set xrange [1:100000]
     set size 0.4,0.95
     set origin 0.0,0.0
     set key off
@@ -25,6 +26,7 @@ do for [fmt in "svg png"] {
          fuzz using 4:(valid(3) ? 1.0 : NaN) with points pt 9 ps 1.3 lc rgb "black" title "AFL++ first crash (execs)"
     unset arrow 1
     set size 0.6,0.95
+    set autoscale x
     set origin 0.4,0.0
     set key outside right top font ",9" spacing 0.9
     set xlabel "seconds for the whole catalogue at that budget (2 shared cores)"
