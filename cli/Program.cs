@@ -23,6 +23,8 @@ internal static class Program
             ServeCommand.Create(),
             DiffCommand.Create(),
             FuzzCommand.Create(),
+            TradeoffsCommand.Create(),
+            BenchCommand.Create(),
         };
 
         var parse = root.Parse(args);

@@ -18,7 +18,7 @@ public static class CellQuery
     /// <param name="current">The current cell, for <see cref="PickPolicy.CurrentFirst"/>; <see cref="CellId.None"/> when none.</param>
     /// <param name="policy">The pick policy.</param>
     /// <param name="landscape">Which blocks are loaded.</param>
-    /// <param name="fidelity">Retail or ACE.</param>
+    /// <param name="fidelity">Retail or ACE, float32 or the double reference (which also picks in double).</param>
     /// <returns>The containing cell, or <see cref="CellId.None"/>.</returns>
     public static CellId FindCellListOutdoor(
         CellArray array,
@@ -31,6 +31,13 @@ public static class CellQuery
     {
         array.Reset();
         OutdoorCells.AddAllOutsideCells(array, position, Vector3.Zero, spheres, landscape, fidelity);
-        return spheres.IsEmpty ? CellId.None : ContainingCell.PickOutdoor(array, position, spheres[0].Center, policy, current);
+        if (spheres.IsEmpty)
+        {
+            return CellId.None;
+        }
+
+        return fidelity.Precision == OutdoorPrecision.Double
+            ? ContainingCell.PickOutdoorDouble(array, position, spheres[0].Center, policy, current)
+            : ContainingCell.PickOutdoor(array, position, spheres[0].Center, policy, current);
     }
 }

@@ -3,7 +3,7 @@ using System.Numerics;
 namespace AcPhys.Core;
 
 /// <summary>The outdoor containing-cell pick of <c>find_cell_list</c> (facts §4 step 4b, §5.5).</summary>
-public static class ContainingCell
+public static partial class ContainingCell
 {
     /// <summary>
     /// Picks the land cell containing sphere 0's centre among the loaded land cells of the array: closed 24 m squares,

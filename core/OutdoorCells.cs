@@ -106,11 +106,24 @@ public static class OutdoorCells
             // Retail works on a copy of the position (ACE mutates the caller's, facts §7 #5).
             var id = position;
             float ox = origin.X, oy = origin.Y;
-            if (LandDefs.AdjustToOutside(ref id, ref ox, ref oy) && LandDefs.GidToLcoord(id, out var only))
+            if (fidelity.Precision == OutdoorPrecision.Double)
+            {
+                if (OutdoorCellsDouble.OriginCell(position, origin, out var exact))
+                {
+                    AddOutsideCell(array, exact.X, exact.Y, landscape, fidelity);
+                }
+            }
+            else if (LandDefs.AdjustToOutside(ref id, ref ox, ref oy) && LandDefs.GidToLcoord(id, out var only))
             {
                 AddOutsideCell(array, only.X, only.Y, landscape, fidelity);
             }
 
+            return;
+        }
+
+        if (fidelity.Precision == OutdoorPrecision.Double)
+        {
+            OutdoorCellsDouble.AddSpheres(array, position, spheres, landscape, fidelity);
             return;
         }
 

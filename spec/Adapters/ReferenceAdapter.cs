@@ -6,7 +6,8 @@ namespace AcPhys.Spec.Adapters;
 /// <summary>The bundled reference core (AcPhys.Core) behind the adapter contract.</summary>
 /// <param name="pick">The pick policy to declare and use.</param>
 /// <param name="partsFidelity">Retail or ACE behaviour of the parts variant (facts §7 #3–#4).</param>
-public sealed class ReferenceAdapter(PickPolicy pick = PickPolicy.Retail, PartsFidelity partsFidelity = default) : ICellPhysics
+/// <param name="outdoor">Retail float32 outdoor math, or the exact double reference (<see cref="OutdoorPrecision.Double"/>).</param>
+public sealed class ReferenceAdapter(PickPolicy pick = PickPolicy.Retail, PartsFidelity partsFidelity = default, OutdoorFidelity outdoor = default) : ICellPhysics
 {
     [ThreadStatic]
     private static CellArray? scratch;
@@ -17,8 +18,12 @@ public sealed class ReferenceAdapter(PickPolicy pick = PickPolicy.Retail, PartsF
     /// <summary>Gets the shared current-cell-first instance.</summary>
     public static ReferenceAdapter CurrentFirst { get; } = new(PickPolicy.CurrentFirst);
 
+    /// <summary>Gets the retail-rules instance computed in the exact double-precision reference arithmetic (outdoor sets and pick).</summary>
+    public static ReferenceAdapter Double { get; } = new(outdoor: OutdoorFidelity.Double);
+
     /// <inheritdoc/>
     public string Name => (pick == PickPolicy.Retail ? "reference" : "reference(current-first)")
+        + (outdoor.Precision == OutdoorPrecision.Double ? "(double)" : string.Empty)
         + (partsFidelity.SameBlockGuard ? "+ace-same-block-guard" : string.Empty) + (partsFidelity.EveryPartAnchors ? "+ace-every-part-anchors" : string.Empty)
         + (Indoor == default ? string.Empty : "+indoor" + Indoor.ToString()[nameof(IndoorFidelity).Length..]) + (Volumes == VolumeMode.Aabb ? "+aabb" : string.Empty);
 
@@ -61,7 +66,7 @@ public sealed class ReferenceAdapter(PickPolicy pick = PickPolicy.Retail, PartsF
     {
         var array = scratch ??= new CellArray();
         array.Reset();
-        OutdoorCells.AddAllOutsideCells(array, cell, System.Numerics.Vector3.Zero, [.. spheres], OpenLand.Instance);
+        OutdoorCells.AddAllOutsideCells(array, cell, System.Numerics.Vector3.Zero, [.. spheres], OpenLand.Instance, outdoor);
         return array.ToIdArray();
     }
 
@@ -69,7 +74,7 @@ public sealed class ReferenceAdapter(PickPolicy pick = PickPolicy.Retail, PartsF
     public FindCellResult FindCell(CellId cell, IReadOnlyList<Sphere> spheres, CellId current)
     {
         var array = scratch ??= new CellArray();
-        var containing = CellQuery.FindCellListOutdoor(array, cell, [.. spheres], current, pick, OpenLand.Instance);
+        var containing = CellQuery.FindCellListOutdoor(array, cell, [.. spheres], current, pick, OpenLand.Instance, outdoor);
         return new FindCellResult(array.ToIdArray(), containing);
     }
 
