@@ -16,6 +16,17 @@ public sealed class OutOfProcessTests
         Assert.True(run.Exit == 0, run.ToString());
         Assert.Contains(" 0 failed", run.Out, StringComparison.Ordinal);
         Assert.Contains("NOT TESTED HYSTERESIS", run.Out, StringComparison.Ordinal); // serve declares the retail pick
+        Assert.Contains("verify: 31 invariants, 29 passed, 0 failed, 2 not tested", run.Out, StringComparison.Ordinal); // scenes travel too
+    }
+
+    [Fact]
+    public void ServedIndoorFaultIsCaughtThroughScenesOnTheWire()
+    {
+        // outdoor-wins (the pick prefers the land cell) is only visible with a scene: it must cross the protocol.
+        var run = Acphys.Run(["verify", "--impl-cmd", Acphys.ServeCommand + " --fault outdoor-wins", "--only", "INTERIOR-WINS", "--cases", "300", "--timeout", "60"]);
+        Assert.True(run.Exit == 1, run.ToString());
+        Assert.Contains("FAIL INTERIOR-WINS on reference+outdoor-wins", run.Out, StringComparison.Ordinal);
+        Assert.Contains("  shrunk     cottage-1", run.Out, StringComparison.Ordinal);
     }
 
     [Fact]
@@ -35,7 +46,9 @@ public sealed class OutOfProcessTests
         var run = Acphys.Run(["verify", "--impl-cmd", Acphys.PythonExample, "--cases", "400", "--timeout", "60"]);
         Assert.True(run.Exit == 0, run.ToString());
         Assert.Contains("against python-example;", run.Out, StringComparison.Ordinal);
-        Assert.Contains("verify: 21 invariants, 18 passed, 0 failed, 3 not tested", run.Out, StringComparison.Ordinal);
+        Assert.Contains("verify: 31 invariants, 18 passed, 0 failed, 13 not tested", run.Out, StringComparison.Ordinal);
+        Assert.Contains("; lacks outside_cells_parts, find_cell_scene", run.Out, StringComparison.Ordinal);
+        Assert.Contains("NOT TESTED INTERIOR-WINS: implementation lacks find_cell_scene", run.Out, StringComparison.Ordinal);
         Assert.Contains("[impl] acphys_impl.py: protocol 1", run.Err, StringComparison.Ordinal); // its stderr log is passed through
     }
 
@@ -72,7 +85,7 @@ public sealed class OutOfProcessTests
     {
         var run = Acphys.Run(["verify", "--impl-cmd", Acphys.PythonExample + " --ops lcoord_to_gid,gid_to_lcoord", "--cases", "300", "--timeout", "60"]);
         Assert.True(run.Exit == 0, run.ToString());
-        Assert.Contains("verify: 21 invariants, 1 passed, 0 failed, 20 not tested", run.Out, StringComparison.Ordinal);
+        Assert.Contains("verify: 31 invariants, 1 passed, 0 failed, 30 not tested", run.Out, StringComparison.Ordinal);
         Assert.Contains("capabilities: offers gid_to_lcoord, lcoord_to_gid; lacks blockid_to_lcoord, inbound_valid_cellid,", run.Out, StringComparison.Ordinal);
         Assert.Contains("NOT TESTED COVERAGE: implementation lacks outside_cells", run.Out, StringComparison.Ordinal);
         Assert.Contains("NOT TESTED ADJUST-RANGE: implementation lacks adjust_to_outside", run.Out, StringComparison.Ordinal);

@@ -1,7 +1,9 @@
+using System.Numerics;
 using System.Text.Json;
 using AcPhys.Core;
 using AcPhys.Spec.Adapters;
 using AcPhys.Spec.Protocol;
+using AcPhys.Spec.Scenes;
 
 namespace AcPhys.E2E;
 
@@ -51,11 +53,45 @@ public sealed class WireTests
         Assert.Equal("{\"cell\":\"0x00000000\"}", server.Answer("{\"op\":\"lcoord_to_gid\",\"x\":2040,\"y\":0}"));
         Assert.Equal("{\"ok\":true,\"cell\":\"0xA8B40039\",\"x\":191.5,\"y\":0}", server.Answer("{\"op\":\"adjust_to_outside\",\"cell\":\"0xA9B40001\",\"x\":-0.5,\"y\":-0.0001}"));
         Assert.Equal("{\"ok\":false,\"x\":0,\"y\":0}", server.Answer("{\"op\":\"get_outside_lcoord\",\"cell\":\"0xA9B40001\",\"x\":\"NaN\",\"y\":0}"));
-        Assert.Equal("{\"error\":\"scenes not supported yet\"}", server.Answer("{\"op\":\"find_cell\",\"scene\":{},\"cell\":\"0xA9B40001\",\"spheres\":[],\"current\":null}"));
+        Assert.StartsWith("{\"error\":\"malformed request: invalid scene: find_cell: $.scene", server.Answer("{\"op\":\"find_cell\",\"scene\":{},\"cell\":\"0xA9B40001\",\"spheres\":[],\"current\":null}"), StringComparison.Ordinal);
         Assert.StartsWith("{\"error\":\"unknown op", server.Answer("{\"op\":\"teleport\"}"), StringComparison.Ordinal);
         Assert.StartsWith("{\"error\":\"malformed request: not JSON", server.Answer("hello"), StringComparison.Ordinal);
         using var hello = JsonDocument.Parse(server.Answer("{\"op\":\"hello\",\"protocol\":1}"));
-        Assert.Equal(9, hello.RootElement.GetProperty("ops").GetArrayLength());
+        Assert.Equal(10, hello.RootElement.GetProperty("ops").GetArrayLength());
         Assert.StartsWith("{\"error\":\"protocol 2 not supported", server.Answer("{\"op\":\"hello\",\"protocol\":2}"), StringComparison.Ordinal);
+    }
+
+    [Fact]
+    public void SceneQueriesOverTheWireAnswerLikeTheReferenceInProcess()
+    {
+        // A two-room cottage in 0xA9B4 at (50, 50): the scene travels as compact JSON in find_cell and the server's
+        // answer, read back, equals the in-process reference answer for points outside, in each room and at a door.
+        var plan = new CottagePlan((0xA9 * 192.0) + 50, (0xB4 * 192.0) + 50, 0.3f, 2, 6f, 6f, 0b101, true, true);
+        var scene = SceneKit.Cottage(plan);
+        var server = new ProtocolServer(ReferenceAdapter.Instance);
+        var owner = new CellId(0xA9B40013);
+        var points = new[] { new Vector3(53, 49, 0.5f), new Vector3(53, 51, 0.5f), plan.ToBlock(new Vector3(3, 3, 0.5f)), plan.ToBlock(new Vector3(9, 3, 0.5f)), plan.ToBlock(new Vector3(3, 0.1f, 0.5f)) };
+        int indoors = 0;
+        foreach (var p in points)
+        {
+            var spheres = new[] { new Sphere(p, 0.5f) };
+            var expected = ReferenceAdapter.Instance.FindCell(scene, owner, spheres, CellId.None);
+            string request = Wire.Line(w =>
+            {
+                w.WriteString("op", "find_cell");
+                w.WritePropertyName("scene");
+                w.WriteRawValue(SceneJson.WriteCompact(scene));
+                Wire.WriteCell(w, "cell", owner);
+                Wire.WriteSpheres(w, "spheres", spheres);
+                w.WriteNull("current");
+            });
+            Assert.DoesNotContain('\n', request);
+            using var answer = Wire.Parse(server.Answer(request));
+            Assert.Equal(expected.Cells, Wire.ReadCells(answer.RootElement, "cells"));
+            Assert.Equal(expected.Containing, Wire.ReadOptionalCell(answer.RootElement, "containing"));
+            indoors += expected.Containing.IsLand ? 0 : 1;
+        }
+
+        Assert.True(indoors >= 2, $"only {indoors} of the points were indoors; the test would not see a scene being ignored");
     }
 }

@@ -36,7 +36,7 @@ internal sealed class VerifyReport(VerifySettings settings, ICellPhysics impl)
         if (impl.Ops != Op.All)
         {
             // A partial implementation: say up front what it offers; invariants needing the rest are NOT TESTED.
-            Terminal.Line($"capabilities: offers {string.Join(", ", OpNames.Names(impl.Ops))}; lacks {string.Join(", ", OpNames.Names(Op.All & ~impl.Ops))}");
+            Terminal.Line($"capabilities: offers {string.Join(", ", OpNames.Names(impl.Ops))}; lacks {string.Join(", ", OpNames.Names(Op.Every & ~impl.Ops))}");
         }
 
         if (settings.Fault is not null)

@@ -42,6 +42,9 @@ public enum Op
 
     /// <summary>Every operation of protocol v1 on open land.</summary>
     All = LandDefs | OutsideCells | FindCell | OutsideCellsParts,
+
+    /// <summary>Every operation an invariant may need: <see cref="All"/> and scenes.</summary>
+    Every = All | FindCellScene,
 }
 
 /// <summary>Protocol names of <see cref="Op"/> values.</summary>

@@ -1,6 +1,8 @@
+using System.Runtime.CompilerServices;
 using System.Text.Json;
 using AcPhys.Core;
 using AcPhys.Spec.Adapters;
+using AcPhys.Spec.Scenes;
 
 namespace AcPhys.Spec.Protocol;
 
@@ -15,6 +17,9 @@ public sealed class ProcessAdapter : ICellPhysics, IDisposable
     private readonly LineProcess child;
     private readonly TimeSpan timeout;
     private readonly Lock gate = new();
+
+    // Scenes are immutable records: serialise each once, however many steps of a walk query it.
+    private static readonly ConditionalWeakTable<Scene, string> CompactScenes = [];
 
     private ProcessAdapter(LineProcess child, TimeSpan timeout, string name, Op ops, PickPolicy pick, IReadOnlyList<string> unknownOps)
     {
@@ -155,24 +160,48 @@ public sealed class ProcessAdapter : ICellPhysics, IDisposable
         a => Wire.ReadCells(a, "cells"));
 
     /// <inheritdoc/>
-    public FindCellResult FindCell(CellId cell, IReadOnlyList<Sphere> spheres, CellId current) => Call(
-        Op.FindCell,
-        w =>
+    public FindCellResult FindCell(CellId cell, IReadOnlyList<Sphere> spheres, CellId current) =>
+        Call(Op.FindCell, w => FindCellFields(w, null, cell, spheres, current), ReadFindCell);
+
+    /// <summary>
+    /// <c>find_cell</c> with a scene: the scene travels as its compact JSON (docs/protocol.md, "Scenes") and is
+    /// served only by an implementation that announced <c>find_cell_scene</c>; a null scene is open land.
+    /// </summary>
+    /// <param name="scene">The scene, or null for open land.</param>
+    /// <param name="cell">The position's cell.</param>
+    /// <param name="spheres">Centres in <paramref name="cell"/>'s block frame.</param>
+    /// <param name="current">The current cell, or <see cref="CellId.None"/>.</param>
+    /// <returns>The candidates and the containing cell.</returns>
+    public FindCellResult FindCell(Scene? scene, CellId cell, IReadOnlyList<Sphere> spheres, CellId current) =>
+        scene is null
+            ? FindCell(cell, spheres, current)
+            : Call(Op.FindCellScene, "find_cell", w => FindCellFields(w, scene, cell, spheres, current), ReadFindCell);
+
+    private static void FindCellFields(Utf8JsonWriter w, Scene? scene, CellId cell, IReadOnlyList<Sphere> spheres, CellId current)
+    {
+        if (scene is null)
         {
-            // Open land only: scenes (issue #4) are sent here once the scene JSON exists.
             w.WriteNull("scene");
-            Wire.WriteCell(w, "cell", cell);
-            Wire.WriteSpheres(w, "spheres", spheres);
-            if (current.IsNone)
-            {
-                w.WriteNull("current");
-            }
-            else
-            {
-                Wire.WriteCell(w, "current", current);
-            }
-        },
-        a => new FindCellResult(Wire.ReadCells(a, "cells"), Wire.ReadOptionalCell(a, "containing")));
+        }
+        else
+        {
+            w.WritePropertyName("scene");
+            w.WriteRawValue(CompactScenes.GetValue(scene, SceneJson.WriteCompact), skipInputValidation: true);
+        }
+
+        Wire.WriteCell(w, "cell", cell);
+        Wire.WriteSpheres(w, "spheres", spheres);
+        if (current.IsNone)
+        {
+            w.WriteNull("current");
+        }
+        else
+        {
+            Wire.WriteCell(w, "current", current);
+        }
+    }
+
+    private static FindCellResult ReadFindCell(JsonElement a) => new(Wire.ReadCells(a, "cells"), Wire.ReadOptionalCell(a, "containing"));
 
     /// <inheritdoc/>
     public IReadOnlyList<CellId> OutsideCellsParts(IReadOnlyList<Part> parts) => Call(
@@ -202,12 +231,13 @@ public sealed class ProcessAdapter : ICellPhysics, IDisposable
         return ok;
     }
 
-    private T Call<T>(Op op, Action<Utf8JsonWriter> fields, Func<JsonElement, T> read)
+    private T Call<T>(Op op, Action<Utf8JsonWriter> fields, Func<JsonElement, T> read) => Call(op, OpNames.Names(op)[0], fields, read);
+
+    private T Call<T>(Op op, string name, Action<Utf8JsonWriter> fields, Func<JsonElement, T> read)
     {
-        string name = OpNames.Names(op)[0];
         if ((Ops & op) == 0)
         {
-            throw new NotSupportedException($"{Name} does not offer {name}");
+            throw new NotSupportedException($"{Name} does not offer {OpNames.Names(op)[0]}");
         }
 
         string request = Wire.Line(w =>

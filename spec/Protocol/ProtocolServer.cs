@@ -1,6 +1,7 @@
 using System.Text.Json;
 using AcPhys.Core;
 using AcPhys.Spec.Adapters;
+using AcPhys.Spec.Scenes;
 
 namespace AcPhys.Spec.Protocol;
 
@@ -11,8 +12,10 @@ namespace AcPhys.Spec.Protocol;
 /// <param name="impl">The implementation to serve.</param>
 public sealed class ProtocolServer(ICellPhysics impl)
 {
-    /// <summary>The answer to a <c>find_cell</c> with a scene, until scenes land (issue #4, branch <c>indoor</c>).</summary>
-    public const string ScenesNotSupported = "scenes not supported yet";
+    // The last scene read, by its exact text: a walk sends the same scene on every step, and reusing the instance
+    // reuses its built core scene (SceneBuild caches per instance).
+    // One reference, swapped whole, so concurrent Answer calls never see a text paired with another scene.
+    private LastScene? last;
 
     /// <summary>Reads requests until end of input, answering each on its own line.</summary>
     /// <param name="input">Requests.</param>
@@ -74,7 +77,13 @@ public sealed class ProtocolServer(ICellPhysics impl)
             return Error($"unknown op \"{op}\"");
         }
 
-        if ((impl.Ops & known) == 0)
+        // find_cell_scene is announced, never sent: a scene travels in find_cell (docs/protocol.md, "Scenes").
+        if (known == Op.FindCellScene)
+        {
+            known = Op.FindCell;
+        }
+
+        if (known != Op.FindCell && (impl.Ops & known) == 0)
         {
             return Error($"op \"{op}\" not offered by {impl.Name}");
         }
@@ -131,13 +140,23 @@ public sealed class ProtocolServer(ICellPhysics impl)
 
             case Op.FindCell:
                 {
-                    if (Wire.Field(request, "scene").ValueKind != JsonValueKind.Null)
+                    var sceneField = Wire.Field(request, "scene");
+                    Scene? scene = null;
+                    if (sceneField.ValueKind != JsonValueKind.Null)
                     {
-                        // Hook for scenes (issue #4): open land only until the scene format lands.
-                        return Error(ScenesNotSupported);
+                        if ((impl.Ops & Op.FindCellScene) == 0)
+                        {
+                            return Error($"scenes not served by {impl.Name} (it does not offer find_cell_scene)");
+                        }
+
+                        scene = ReadScene(sceneField);
+                    }
+                    else if ((impl.Ops & Op.FindCell) == 0)
+                    {
+                        return Error($"op \"find_cell\" on open land not offered by {impl.Name}");
                     }
 
-                    var r = impl.FindCell(Wire.ReadCell(request, "cell"), Wire.ReadSpheres(request, "spheres"), Wire.ReadOptionalCell(request, "current"));
+                    var r = impl.FindCell(scene, Wire.ReadCell(request, "cell"), Wire.ReadSpheres(request, "spheres"), Wire.ReadOptionalCell(request, "current"));
                     return Wire.Line(w =>
                     {
                         Wire.WriteCells(w, "cells", r.Cells);
@@ -163,6 +182,26 @@ public sealed class ProtocolServer(ICellPhysics impl)
         }
     }
 
+    private Scene ReadScene(JsonElement field)
+    {
+        string text = field.GetRawText();
+        if (last is { } hit && hit.Text == text)
+        {
+            return hit.Scene;
+        }
+
+        try
+        {
+            var scene = SceneJson.Read(field, "find_cell", "$.scene");
+            last = new LastScene(text, scene);
+            return scene;
+        }
+        catch (SceneFormatException e)
+        {
+            throw new WireException("invalid scene: " + e.Message, e);
+        }
+    }
+
     private string Hello(JsonElement request)
     {
         if (request.TryGetProperty("protocol", out var p) && !(p.ValueKind == JsonValueKind.Number && p.TryGetInt32(out int v) && v == Wire.Version))
@@ -184,4 +223,6 @@ public sealed class ProtocolServer(ICellPhysics impl)
             w.WriteString("pick", PickNames.Of(impl.Pick));
         });
     }
+
+    private sealed record LastScene(string Text, Scene Scene);
 }

@@ -34,6 +34,20 @@ public static class SceneJson
         return Encoding.UTF8.GetString(buffer.ToArray()) + "\n";
     }
 
+    /// <summary>Serialises a scene on one line (no whitespace), as protocol v1 sends it in <c>find_cell</c>.</summary>
+    /// <param name="scene">The scene.</param>
+    /// <returns>The compact text.</returns>
+    public static string WriteCompact(Scene scene)
+    {
+        using var buffer = new MemoryStream();
+        using (var w = new Utf8JsonWriter(buffer, new JsonWriterOptions { Indented = false }))
+        {
+            WriteValue(w, scene);
+        }
+
+        return Encoding.UTF8.GetString(buffer.ToArray());
+    }
+
     /// <summary>Writes a scene object at the writer's position.</summary>
     /// <param name="w">The writer.</param>
     /// <param name="scene">The scene.</param>
