@@ -82,7 +82,7 @@ public static class IndoorInvariants
     /// <summary>PORTAL-TRANSIT.</summary>
     public static readonly Invariant<SceneWalk> PortalTransit = new(
         "PORTAL-TRANSIT",
-        "With steps no longer than the radius: a centre inside a loaded env cell by 1 mm on two steps running is in that cell after the second (no absorbing outdoor state), except while the position is a land cell framed in another block than the cell (facts §6.11: retail does not re-frame the building test) or the cell is not directly behind a building portal whose building's land cell is a candidate (facts §5.3: a building is reached only through the land cell it is attached to); a centre clear of every cell on two steps running over loaded land, queried from a loaded cell, is in a land cell (no absorbing indoor state); and a load hint for an unloaded cell behind the position's portal appears exactly when a sphere reaches past r + EPS toward it.",
+        "With steps no longer than the radius: a centre inside a loaded env cell by 1 mm on two steps running is in that cell after the second (no absorbing outdoor state), except while the position is a land cell framed in another block than the cell (facts §6.11: retail does not re-frame the building test) or the cell is not directly behind a building portal whose building's land cell is a candidate (facts §5.3: a building is reached only through the land cell it is attached to); a centre clear of every cell on two steps running over loaded land, queried from a loaded cell, is in a land cell (no absorbing indoor state); neither clause applies while the client still holds a cell it lost for a reason NEVER-NULL excuses; and a load hint for an unloaded cell behind the position's portal appears exactly when a sphere reaches past r + EPS toward it.",
         "facts §5.1, §5.3, §5.4, §6.9, §6.11",
         Op.FindCellScene,
         SceneDomain.Instance,
@@ -94,6 +94,7 @@ public static class IndoorInvariants
             }
 
             var trace = SceneWalkRunner.Run(impl, w);
+            var offTrack = OffTrack(w, trace);
             bool applied = false;
             for (int i = 0; i < trace.Count; i++)
             {
@@ -104,9 +105,9 @@ public static class IndoorInvariants
                     return Outcome.Violated($"step {s.Index}: {hint}");
                 }
 
-                if (i == 0)
+                if (i == 0 || offTrack[i] || offTrack[i - 1])
                 {
-                    continue;
+                    continue; // see OffTrack: after an excused no-answer the walk is not a retail trajectory
                 }
 
                 var p = trace[i - 1];
@@ -159,7 +160,7 @@ public static class IndoorInvariants
     /// <summary>NO-TUNNEL.</summary>
     public static readonly Invariant<SceneWalk> NoTunnel = new(
         "NO-TUNNEL",
-        "With steps no longer than the radius, the current cell changes only to a land cell of the 3 × 3 neighbourhood (from land), a portal-linked env cell (from an env cell), a land cell (from an env cell with an exit), or a cell behind a building portal (from land).",
+        "With steps no longer than the radius, the current cell changes only to a land cell of the 3 × 3 neighbourhood (from land), a portal-linked env cell (from an env cell), a land cell (from an env cell with an exit), or a cell behind a building portal or portal-linked to one (from land: the transit closure runs within one query); not checked while the client still holds a cell it lost for a reason NEVER-NULL excuses.",
         "facts §3.2, §5.1, §5.3",
         Op.FindCellScene,
         SceneDomain.Instance,
@@ -171,11 +172,12 @@ public static class IndoorInvariants
             }
 
             var trace = SceneWalkRunner.Run(impl, w);
+            var offTrack = OffTrack(w, trace);
             bool applied = false;
             for (int i = 1; i < trace.Count; i++)
             {
                 CellId a = trace[i - 1].Current, b = trace[i].Current;
-                if (a.IsNone || a == b)
+                if (a.IsNone || a == b || offTrack[i])
                 {
                     continue;
                 }
@@ -224,7 +226,7 @@ public static class IndoorInvariants
     /// <summary>ENTER-EXIT.</summary>
     public static readonly Invariant<SceneWalk> EnterExit = new(
         "ENTER-EXIT",
-        "A walk that starts outdoors clear of every cell, goes in and comes back out the same way to the same point ends in the land cell it started in.",
+        "A walk that starts outdoors clear of every cell, goes in and comes back out the same way to the same point ends in the land cell it started in (unless on the way it lost its cell for a reason NEVER-NULL excuses).",
         "facts §4 (the pick depends on the position and, with current-first, on the path only at ties)",
         Op.FindCellScene,
         SceneDomain.Instance,
@@ -236,6 +238,11 @@ public static class IndoorInvariants
             }
 
             var trace = SceneWalkRunner.Run(impl, w);
+            if (OffTrack(w, trace).Any(off => off))
+            {
+                return Outcome.Vacuous; // the walk lost its cell for an excused reason on the way (see OffTrack)
+            }
+
             var first = trace[0];
             var last = trace[^1];
             var c = Center(first);
@@ -324,23 +331,19 @@ public static class IndoorInvariants
     /// <summary>NEVER-NULL.</summary>
     public static readonly Invariant<SceneWalk> NeverNull = new(
         "NEVER-NULL",
-        "Every query has a containing cell, except for a documented reason: sphere 0's centre off the map, the position's own cell not loaded, over an unloaded block (unless inside the position's own env cell), in a scene with unloaded cells, or outside the position's env cell after a step longer than the radius (facts §6.9).",
-        "facts §4 step 4b, §6.3, §6.9",
+        "Every query has a containing cell, except for a documented reason: sphere 0's centre off the map, the position's own cell not loaded, over an unloaded block (unless inside the position's own env cell), in a scene with unloaded cells, outside the position's env cell after a step longer than the radius (facts §6.9) or with no sphere reaching any of its portals (it left through a wall: an env cell is left only through portals, §5.1), and while the client still holds a cell it lost for one of these reasons (retail's transition would have refused that move).",
+        "facts §4 step 4b, §5.1, §6.3, §6.9",
         Op.FindCellScene,
         SceneDomain.Instance,
         (impl, w) =>
         {
             bool applied = false;
-            bool shortSteps = ShortSteps(w);
-            foreach (var s in SceneWalkRunner.Run(impl, w))
+            var trace = SceneWalkRunner.Run(impl, w);
+            var offTrack = OffTrack(w, trace);
+            for (int i = 0; i < trace.Count; i++)
             {
-                var c = Center(s);
-                var (wx, wy) = SceneOracle.World(s.Query.Cell, c);
-                bool offMap = !SceneOracle.OnMap(wx, wy, Margin);
-                bool unloadedLand = SceneOracle.LandAt(wx, wy) is not { } lc || !w.Scene.Blocks.Contains(Oracle.CellOf(lc.X, lc.Y).Landblock);
-                bool inOwnCell = SceneOracle.Cell(w.Scene, s.Query.Cell) is { } own && SceneOracle.Depth(own, s.Query.Cell, c) >= Margin;
-                bool positionUnloaded = !SceneOracle.IsLoaded(w.Scene, s.Query.Cell); // facts §4 step 4: no visible cell, no pick
-                if (offMap || positionUnloaded || (unloadedLand && !inOwnCell) || w.Scene.UnloadedCells.Count > 0 || !shortSteps)
+                var s = trace[i];
+                if (offTrack[i] || NoAnswerReason(w, s) is not null)
                 {
                     continue;
                 }
@@ -348,6 +351,8 @@ public static class IndoorInvariants
                 applied = true;
                 if (s.Containing.IsNone)
                 {
+                    var c = Center(s);
+                    var (wx, wy) = SceneOracle.World(s.Query.Cell, c);
                     return Outcome.Violated($"step {s.Index}: no containing cell for sphere 0's centre at world ({wx:R}, {wy:R}, z {c.Z:R}) from {s.Query.Cell}, over loaded land");
                 }
             }
@@ -417,6 +422,97 @@ public static class IndoorInvariants
         return null;
     }
 
+    // NEVER-NULL's documented reasons for a query without a containing cell, or null when it must have one.
+    private static string? NoAnswerReason(SceneWalk w, WalkStep s)
+    {
+        var c = Center(s);
+        var (wx, wy) = SceneOracle.World(s.Query.Cell, c);
+        bool unloadedLand = SceneOracle.LandAt(wx, wy) is not { } lc || !w.Scene.Blocks.Contains(Oracle.CellOf(lc.X, lc.Y).Landblock);
+        bool inOwnCell = SceneOracle.Cell(w.Scene, s.Query.Cell) is { } own && SceneOracle.Depth(own, s.Query.Cell, c) >= Margin;
+        return !SceneOracle.OnMap(wx, wy, Margin) ? "off the map"
+            : !SceneOracle.IsLoaded(w.Scene, s.Query.Cell) ? "the position's cell is not loaded" // facts §4 step 4: no visible cell, no pick
+            : unloadedLand && !inOwnCell ? "over an unloaded block"
+            : w.Scene.UnloadedCells.Count > 0 ? "the scene has unloaded cells"
+            : !ShortSteps(w) ? "a step longer than the radius" // facts §6.9
+            : LeftThroughWall(w.Scene, s) ? "left the env cell through a wall" // facts §5.1: only portals lead out
+            : null;
+    }
+
+    // A query from a loaded env cell whose volume no longer holds sphere 0's centre, where no transit can give it a
+    // cell: the cells reachable through portal planes some sphere reaches (the side read from the geometry, as
+    // LoadHintMismatch does) include no exit and none of them holds the centre by 1 mm. Retail then has nothing to answer; in
+    // the game the wall's collision stops the body first. Over-approximates retail's closure (a reached plane is enough),
+    // so it excuses no more than retail's own transit would.
+    private static bool LeftThroughWall(Scene scene, WalkStep s)
+    {
+        var own = SceneOracle.Cell(scene, s.Query.Cell);
+        if (own is null || !SceneOracle.IsLoadedEnv(scene, own.Id))
+        {
+            return false;
+        }
+
+        var seen = new HashSet<CellId> { own.Id };
+        var queue = new Queue<SceneCell>([own]);
+        while (queue.Count > 0)
+        {
+            var cell = queue.Dequeue();
+            if (SceneOracle.Depth(cell, s.Query.Cell, Center(s)) >= Margin)
+            {
+                return false; // a reachable cell holds the centre (within the 1 mm tie band either answer is allowed)
+            }
+
+            var frame = new Frame(cell.Origin, cell.Rotation);
+            var bounds = cell.Pieces[0].ToConvex().Bounds;
+            var middle = (bounds.Min + bounds.Max) / 2;
+            foreach (var portal in cell.Portals)
+            {
+                var plane = new CellPlane(Vector3.Normalize(portal.Plane.Normal), portal.Plane.D / portal.Plane.Normal.Length());
+                double side = Math.Sign(plane.Distance(middle));
+                bool reached = s.Query.Spheres.Any(sphere => (-side * plane.Distance(frame.GlobalToLocal(sphere.Center))) + sphere.Radius + LandDefs.Epsilon > -Margin);
+                if (!reached)
+                {
+                    continue;
+                }
+
+                if (portal.IsExit)
+                {
+                    return false; // an exit adds the land cells around the body
+                }
+
+                var next = cell.Id.WithLow(portal.Other);
+                if (seen.Add(next) && SceneOracle.IsLoadedEnv(scene, next) && SceneOracle.Cell(scene, next) is { } other)
+                {
+                    queue.Enqueue(other);
+                }
+            }
+        }
+
+        return true;
+    }
+
+    // Steps queried while the client still holds a cell it lost for a documented reason (a no-answer NEVER-NULL
+    // excuses): retail's transition fails on a null cell and walls stop the body, so from there until a query answers
+    // again the walk is not a trajectory retail could produce, and statements about absorbing states do not apply.
+    private static bool[] OffTrack(SceneWalk w, IReadOnlyList<WalkStep> trace)
+    {
+        var off = new bool[trace.Count];
+        bool stale = false;
+        for (int i = 0; i < trace.Count; i++)
+        {
+            off[i] = stale;
+            if (!trace[i].Containing.IsNone)
+            {
+                stale = false;
+            }
+            else if (NoAnswerReason(w, trace[i]) is not null)
+            {
+                stale = true;
+            }
+        }
+
+        return off;
+    }
+
     private static bool ShortSteps(SceneWalk w) => w.Walk.Body.Count > 0 && w.Walk.Steps.All(d => d.Length() <= w.Walk.Body[0].Radius);
 
     private static CellId Move(CellId id, int dx, int dy) => id.IsNone ? id : new CellId((byte)(id.BlockX + dx), (byte)(id.BlockY + dy), id.Low);
@@ -469,7 +565,9 @@ public static class IndoorInvariants
 
         if (a.IsLand && b.IsEnv)
         {
-            return scene.Buildings.Any(bl => bl.Block == b.Landblock && bl.Portals.Any(p => p.Cell == b.Low));
+            // facts §4 step 3: the transit closure runs within one query, so a sphere that crosses a wall into a
+            // second room is entered through the first room's portals in the same call.
+            return scene.Buildings.Any(bl => bl.Block == b.Landblock && Reaches(scene, bl, b));
         }
 
         return a.Landblock == b.Landblock
