@@ -61,7 +61,7 @@ internal static class SceneSvg
         sb.Append($"<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{Num(width)}\" height=\"{Num(Header + height + legend)}\" viewBox=\"0 {Num(-Header)} {Num(width)} {Num(Header + height + legend)}\" font-family=\"monospace\" font-size=\"11\"");
         sb.Append($" data-world-left=\"{Num(minX)}\" data-world-top=\"{Num(maxY)}\" data-px-per-m=\"{scale:R}\">\n");
         sb.Append($"<title>{Escape(title)}</title>\n<rect x=\"0\" y=\"{Num(-Header)}\" width=\"{Num(width)}\" height=\"{Num(Header + height + legend)}\" fill=\"white\"/>\n");
-        string headline = $"{check.Trace.Count - 1} steps; {sw.Size}; "
+        string headline = $"{sw.Size}; "
             + (bad is int b1 ? $"first violation at step {b1}: {string.Join(", ", check.PerStep[b1].Select(v => v.InvariantId).Distinct())}" : "no violation");
         int chars = (int)(width / 6.7);
         sb.Append($"<text x=\"4\" y=\"{Num(-Header + 14)}\" font-weight=\"bold\">{Escape(Clip(title, chars))}</text>\n");
