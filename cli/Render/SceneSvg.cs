@@ -199,6 +199,7 @@ internal static class SceneSvg
 
         // The walk: sphere 0's path, then one marker per step in the containing cell's colour.
         sb.Append("<polyline class=\"path\" fill=\"none\" stroke=\"#444\" stroke-width=\"1\" points=\"").Append(string.Join(' ', centres.Select(P))).Append("\"/>\n");
+        var labels = new List<(double X, double Y)>();
         foreach (var step in check.Trace)
         {
             var p = centres[step.Index];
@@ -225,7 +226,14 @@ internal static class SceneSvg
             bool changes = step.Index == 0 || step.Index == check.Trace.Count - 1 || check.Trace[step.Index - 1].Containing != step.Containing;
             if (changes || isBad)
             {
-                sb.Append($"<text class=\"step-label\" x=\"{Num(Px(p.X) + 6)}\" y=\"{Num(Py(p.Y) - 5)}\" font-size=\"10\" fill=\"{(isBad ? "red" : "#000")}\"{(isBad ? " font-weight=\"bold\"" : string.Empty)}>{step.Index}{(isBad ? " ✗" : string.Empty)}</text>\n");
+                double sx = Px(p.X) + 6, sy = Py(p.Y) - 5;
+                while (labels.Any(l => Math.Abs(l.X - sx) < 18 && Math.Abs(l.Y - sy) < 10))
+                {
+                    sy += 11; // another step's label is here (a walk that comes back): stack below it
+                }
+
+                labels.Add((sx, sy));
+                sb.Append($"<text class=\"step-label\" x=\"{Num(sx)}\" y=\"{Num(sy)}\" font-size=\"10\" fill=\"{(isBad ? "red" : "#000")}\"{(isBad ? " font-weight=\"bold\"" : string.Empty)}>{step.Index}{(isBad ? " ✗" : string.Empty)}</text>\n");
             }
         }
 
