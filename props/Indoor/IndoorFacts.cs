@@ -179,6 +179,29 @@ public sealed class IndoorFacts
         Assert.Contains(Owner, array.ToIdArray()); // ACE: an exit, the outdoor cells are added
     }
 
+    [Fact(DisplayName = "facts §7 #8: ACE filters outside the (visible && numSphere) guard; seen only with ACE's stale array (#6), where a sphere-less indoor query then drops stale land cells")]
+    public void AceFilterOutsideGuard()
+    {
+        // Alone, #8 cannot be seen: a retail array is reset, so a sphere-less query holds only the position (nothing to filter).
+        var built = SceneBuild.Build(SceneKit.Cottage(Plan));
+        var cases = new[]
+        {
+            (Name: "retail", Fidelity: IndoorFidelity.Retail, LandSurvives: false),
+            (Name: "ACE #6 only", Fidelity: new IndoorFidelity(AceKeepsStaleCells: true), LandSurvives: true),
+            (Name: "ACE #6 + #8", Fidelity: new IndoorFidelity(AceKeepsStaleCells: true, AceFilterOutsideGuard: true), LandSurvives: false),
+        };
+        foreach (var c in cases)
+        {
+            var options = CellQueryOptions.RetailStatic with { Fidelity = c.Fidelity };
+            var array = new CellArray();
+            Query(array, Owner, new Vector3(60, 40, 0.5f), options: options);
+            Assert.Contains(array.ToIdArray(), id => id.IsLand); // the outdoor query left land cells
+            SceneQuery.FindCellList(array, built, Room0, [], default, options);
+            Assert.True(c.LandSurvives == array.ToIdArray().Any(id => id.IsLand), $"{c.Name}: land cells {(c.LandSurvives ? "should" : "should not")} survive: [{string.Join(", ", array.ToIdArray())}]");
+            Assert.Contains(Room0, array.ToIdArray());
+        }
+    }
+
     [Fact(DisplayName = "facts §7 #7: ACE's early return after an interior pick skips the filter; retail filters")]
     public void AceEarlyReturnSkipsFilter()
     {
