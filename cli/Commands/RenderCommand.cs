@@ -7,17 +7,20 @@ using AcPhys.Spec.Faults;
 
 namespace AcPhys.Cli.Commands;
 
-/// <summary>The <c>render</c> verb: draws a walk file as SVG (grid, block lines and ids, path, spheres, containing cells, the violating step).</summary>
+/// <summary>
+/// The <c>render</c> verb: draws a walk or a scene walk as SVG (grid, block lines and ids, path, containing cells, the
+/// violating step; for a scene walk also env cell outlines, portals, buildings and unloaded blocks).
+/// </summary>
 internal static class RenderCommand
 {
     /// <summary>Builds the command.</summary>
     /// <returns>The command.</returns>
     public static Command Create()
     {
-        var file = new Argument<string>("file") { Description = "A walk file (kind \"walk\")." };
+        var file = new Argument<string>("file") { Description = "A walk file (kind \"walk\" or \"scene-walk\")." };
         var output = new Option<string>("--output", "-o") { Description = "The SVG file to write (atomically).", HelpName = "FILE", Required = true };
         var fault = new Option<string>("--fault") { Description = "Run the walk against the reference with this planted fault.", HelpName = "FAULT" };
-        var command = new Command("render", "Draw a walk as SVG, with the first violating step highlighted.") { file, output, fault };
+        var command = new Command("render", "Draw a walk or a scene walk as SVG, with the first violating step highlighted.") { file, output, fault };
         command.SetAction(parse => Guard.Run("render", () => Run(parse.GetValue(file) ?? string.Empty, parse.GetValue(output)!, parse.GetValue(fault))));
         return command;
     }
@@ -30,9 +33,9 @@ internal static class RenderCommand
         }
 
         var entry = CorpusJson.ReadFile(path);
-        if (entry.Walk is null)
+        if (entry.Walk is null && entry.SceneWalk is null)
         {
-            throw new UsageException($"{path}: $.kind: render draws walks; this file is kind \"{entry.Kind}\"");
+            throw new UsageException($"{path}: $.kind: render draws walks and scene walks; this file is kind \"{entry.Kind}\"");
         }
 
         ICellPhysics impl = ReferenceAdapter.Instance;
@@ -42,8 +45,17 @@ internal static class RenderCommand
             impl = PlantedFaults.Create(fault.Id);
         }
 
-        var check = WalkReplay.Check(impl, entry.Walk);
-        AtomicFile.WriteAllText(output, WalkSvg.Render(entry.Walk, check, $"{entry.Title} — {impl.Name}"));
+        if (entry.SceneWalk is { } sw)
+        {
+            var sceneCheck = SceneWalkCheck.Run(impl, sw);
+            AtomicFile.WriteAllText(output, SceneSvg.Render(sw, sceneCheck, $"{entry.Title} — {impl.Name}"));
+            Terminal.Line($"render: wrote {output} ({sceneCheck.Trace.Count - 1} steps, {sw.Scene.Cells.Count} env cells, {sw.Scene.PortalCount} portals, "
+                + $"{(sceneCheck.FirstViolatingStep is int f ? $"first violation at step {f}" : "no violation")})");
+            return ExitCodes.Ok;
+        }
+
+        var check = WalkReplay.Check(impl, entry.Walk!);
+        AtomicFile.WriteAllText(output, WalkSvg.Render(entry.Walk!, check, $"{entry.Title} — {impl.Name}"));
         Terminal.Line($"render: wrote {output} ({check.Trace.Count - 1} steps, {(check.FirstViolatingStep is int s ? $"first violation at step {s}" : "no violation")})");
         return ExitCodes.Ok;
     }

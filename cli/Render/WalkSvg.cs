@@ -41,11 +41,11 @@ internal static class WalkSvg
 
         var sb = new StringBuilder();
         sb.Append($"<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{F(width)}\" height=\"{F(Header + height + legend)}\" viewBox=\"0 {F(-Header)} {F(width)} {F(Header + height + legend)}\" font-family=\"monospace\" font-size=\"11\">\n");
-        sb.Append($"<title>{Escape(title)}</title>\n<rect x=\"0\" y=\"{F(-Header)}\" width=\"{F(width)}\" height=\"{F(Header + height + legend)}\" fill=\"white\"/>\n");
+        sb.Append($"<title>{SvgText.Escape(title)}</title>\n<rect x=\"0\" y=\"{F(-Header)}\" width=\"{F(width)}\" height=\"{F(Header + height + legend)}\" fill=\"white\"/>\n");
         int? bad = check.FirstViolatingStep;
         string headline = $"{check.Trace.Count - 1} steps; " + (bad is int b ? $"first violation at step {b}: {string.Join(", ", check.PerStep[b].Select(v => v.InvariantId).Distinct())}" : "no violation");
-        sb.Append($"<text x=\"4\" y=\"{F(-Header + 16)}\" font-weight=\"bold\">{Escape(Clip(title, (int)(width / 7)))}</text>\n");
-        sb.Append($"<text x=\"4\" y=\"{F(-Header + 32)}\">{Escape(Clip(headline, (int)(width / 7)))}</text>\n");
+        sb.Append($"<text x=\"4\" y=\"{F(-Header + 16)}\" font-weight=\"bold\">{SvgText.Escape(SvgText.Clip(title, (int)(width / 7)))}</text>\n");
+        sb.Append($"<text x=\"4\" y=\"{F(-Header + 32)}\">{SvgText.Escape(SvgText.Clip(headline, (int)(width / 7)))}</text>\n");
         sb.Append($"<text x=\"4\" y=\"{F(-Header + 46)}\" fill=\"#555\">green: containing cell per step; red outline: the violating step's containing cell; dashed: the cell under its centre</text>\n");
 
         // Containing cell of every step (drawn first, under the grid); the violating step's expected cell in red.
@@ -113,14 +113,10 @@ internal static class WalkSvg
         {
             ly += LegendLine;
             string line = $"{step.Index,4}  {step.Frame,-10}  {step.Containing,-10}  {step.Current,-10}  {string.Join(", ", check.PerStep[step.Index].Select(v => v.InvariantId).Distinct())}";
-            sb.Append($"<text x=\"4\" y=\"{F(ly)}\" xml:space=\"preserve\" fill=\"{(step.Index == bad ? "red" : "#000")}\">{Escape(line)}</text>\n");
+            sb.Append($"<text x=\"4\" y=\"{F(ly)}\" xml:space=\"preserve\" fill=\"{(step.Index == bad ? "red" : "#000")}\">{SvgText.Escape(line)}</text>\n");
         }
 
         sb.Append("</svg>\n");
         return sb.ToString();
     }
-
-    private static string Clip(string s, int max) => s.Length <= max ? s : s[..Math.Max(max - 1, 1)] + "…";
-
-    private static string Escape(string s) => s.Replace("&", "&amp;", StringComparison.Ordinal).Replace("<", "&lt;", StringComparison.Ordinal).Replace(">", "&gt;", StringComparison.Ordinal);
 }

@@ -9,7 +9,8 @@ namespace AcPhys.Cli.Replay;
 
 /// <summary>
 /// Replays a scene walk (<c>kind: scene-walk</c>): the scene in one line, a step table (frame, position, containing,
-/// current, cells), every scene invariant's verdict, then the faults the file lists. Drawing scenes is not done yet.
+/// current, candidates) with each violation under the step it names, every scene invariant's verdict, then the faults the
+/// file lists. <c>acphys render</c> draws the same walk (<see cref="Render.SceneSvg"/>).
 /// </summary>
 internal sealed class SceneWalkReplay : IReplayInput
 {
@@ -37,19 +38,20 @@ internal sealed class SceneWalkReplay : IReplayInput
             return ExitCodes.Ok;
         }
 
-        var trace = SceneWalkRunner.Run(target.Impl, sw);
-        Terminal.Line($"  {"step",4}  {"frame",-10}  {"position (block frame)",-34}  {"containing",-10}  {"current",-10}  cells");
-        foreach (var step in trace)
+        var check = SceneWalkCheck.Run(target.Impl, sw);
+        Terminal.Line($"  {"step",4}  {"cell",-10}  {"position (block frame)",-34}  {"containing",-10}  {"current",-10}  candidates / violations");
+        foreach (var step in check.Trace)
         {
             Terminal.Line(string.Create(CultureInfo.InvariantCulture, $"  {step.Index,4}  {step.Frame,-10}  {"(" + FloatText.Format(step.Position.X) + ", " + FloatText.Format(step.Position.Y) + ", " + FloatText.Format(step.Position.Z) + ")",-34}  {step.Containing,-10}  {step.Current,-10}  [{string.Join(", ", step.Cells)}]"));
+            foreach (var v in check.PerStep[step.Index])
+            {
+                Terminal.Line($"  {string.Empty,4}  VIOLATED {v.InvariantId}: {v.Message}");
+            }
         }
 
         Terminal.Line();
-        int violated = 0;
-        foreach (var invariant in IndoorInvariants.All)
+        foreach (var (invariant, outcome) in check.Verdicts)
         {
-            var outcome = invariant.IsTestable(target.Impl) ? invariant.Check(target.Impl, sw) : (Outcome?)null;
-            violated += outcome is { IsViolation: true } ? 1 : 0;
             string verdict = outcome is null ? "NOT TESTED" : outcome.Value.Verdict.ToString().ToUpperInvariant();
             Terminal.Line($"  {invariant.Id,-20} {verdict}{(outcome is { IsViolation: true } o ? ": " + o.Message : string.Empty)}");
         }
@@ -68,8 +70,9 @@ internal sealed class SceneWalkReplay : IReplayInput
         }
 
         Terminal.Line();
-        Terminal.Line($"replay: {trace.Count - 1} steps on {target.Impl.Name}: "
-            + (violated == 0 ? "no violation" : $"{violated} invariant(s) violated")
+        int violated = check.ViolatedCount;
+        Terminal.Line($"replay: {check.Trace.Count - 1} steps on {target.Impl.Name}: "
+            + (check.FirstViolatingStep is int f ? $"{violated} invariant(s) violated, first at step {f} ({string.Join(", ", check.PerStep[f].Select(v => v.InvariantId).Distinct())})" : "no violation")
             + (entry.Catches.Count > 0 ? $"; listed faults caught: {caught}/{entry.Catches.Count}" : string.Empty));
         return violated == 0 ? ExitCodes.Ok : ExitCodes.Violated;
     }
