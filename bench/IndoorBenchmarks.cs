@@ -20,18 +20,18 @@ public class IndoorBenchmarks
     [Params(VolumeMode.Bsp, VolumeMode.Aabb)]
     public VolumeMode Volumes { get; set; }
 
-    /// <summary>Gets or sets the case, "scene: where".</summary>
+    /// <summary>Gets or sets the case's short key (<see cref="IndoorBenchCase.ShortKey"/>; bench/results/*/README.md lists them).</summary>
     [ParamsSource(nameof(CaseNames))]
     public string Case { get; set; } = string.Empty;
 
     /// <summary>Gets the case names.</summary>
-    public static IEnumerable<string> CaseNames => IndoorBenchCases.All.Select(c => c.Key);
+    public static IEnumerable<string> CaseNames => IndoorBenchCases.All.Select(c => c.ShortKey);
 
     /// <summary>Builds the scene (outside the timing).</summary>
     [GlobalSetup]
     public void Setup()
     {
-        query = IndoorBenchCases.All.First(c => c.Key == Case);
+        query = IndoorBenchCases.All.First(c => c.ShortKey == Case);
         scene = SceneBuild.Build(query.Description, Volumes);
         FindCellList(); // grow the array once
     }

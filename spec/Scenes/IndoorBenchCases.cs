@@ -5,17 +5,21 @@ namespace AcPhys.Spec.Scenes;
 
 /// <summary>One timed indoor find_cell_list: a scene, the position's cell, sphere centres in its block frame, the current cell.</summary>
 /// <param name="Scene">box-cottage or union-cottage.</param>
+/// <param name="Id">A short id, unique within the scene (BenchmarkDotNet's parameter column).</param>
 /// <param name="Name">Where the body is.</param>
 /// <param name="Description">The scene.</param>
 /// <param name="Position">The position's cell (an env cell for queries from indoors, a land cell from outdoors).</param>
 /// <param name="Spheres">Sphere centres in the position's block frame.</param>
-public sealed record IndoorBenchCase(string Scene, string Name, Scene Description, CellId Position, Sphere[] Spheres)
+public sealed record IndoorBenchCase(string Scene, string Id, string Name, Scene Description, CellId Position, Sphere[] Spheres)
 {
     /// <summary>Gets how the query is made: a retail movement query (pick on, no visibility filter) unless stated.</summary>
     public CellQueryOptions Options { get; init; } = CellQueryOptions.RetailTransition;
 
     /// <summary>Gets the case's name as "scene: where".</summary>
     public string Key => $"{Scene}: {Name}";
+
+    /// <summary>Gets the short key, "box/id" or "union/id".</summary>
+    public string ShortKey => $"{Scene.Split('-')[0]}/{Id}";
 }
 
 /// <summary>
@@ -41,25 +45,25 @@ public static class IndoorBenchCases
     private static IEnumerable<IndoorBenchCase> Cases(string name, Scene scene)
     {
         float w = Plan.Width, d = Plan.Depth;
-        IndoorBenchCase Indoors(string what, int room, float x, float y) => new(name, what, scene, Plan.RoomId(room), Body(x, y));
-        yield return Indoors("inside room 1 (centre)", 1, 1.5f * w, d / 2);
+        IndoorBenchCase Indoors(string id, string what, int room, float x, float y) => new(name, id, what, scene, Plan.RoomId(room), Body(x, y));
+        yield return Indoors("room", "inside room 1 (centre)", 1, 1.5f * w, d / 2);
         if (name == "box-cottage")
         {
-            yield return Indoors("inside room 1, static placement (visibility filter on)", 1, 1.5f * w, d / 2) with { Options = CellQueryOptions.RetailStatic };
+            yield return Indoors("room-static", "inside room 1, static placement (visibility filter on)", 1, 1.5f * w, d / 2) with { Options = CellQueryOptions.RetailStatic };
         }
 
         if (name == "union-cottage")
         {
-            yield return Indoors("in room 0's second L arm (BSP: outside)", 0, 0.25f * w, 0.85f * d);
+            yield return Indoors("l-arm", "in room 0's second L arm (BSP: outside)", 0, 0.25f * w, 0.85f * d);
         }
 
-        yield return Indoors("straddling the front door (exit portal), from room 0", 0, w / 2, 0.2f);
-        yield return Indoors("straddling the door to room 1, from room 0", 0, w - 0.2f, d / 2);
-        yield return Outdoors(name, scene, "outdoors next to the building (0.2 m off the wall)", w / 2, -0.7f);
-        yield return Outdoors(name, scene, "outdoors touching the front door (enters room 0)", w / 2, -0.3f);
+        yield return Indoors("front-door", "straddling the front door (exit portal), from room 0", 0, w / 2, 0.2f);
+        yield return Indoors("inner-door", "straddling the door to room 1, from room 0", 0, w - 0.2f, d / 2);
+        yield return Outdoors(name, scene, "beside", "outdoors next to the building (0.2 m off the wall)", w / 2, -0.7f);
+        yield return Outdoors(name, scene, "enter", "outdoors touching the front door (enters room 0)", w / 2, -0.3f);
     }
 
-    private static IndoorBenchCase Outdoors(string name, Scene scene, string what, float x, float y)
+    private static IndoorBenchCase Outdoors(string name, Scene scene, string id, string what, float x, float y)
     {
         var spheres = Body(x, y);
         var cell = Plan.Block.BlockCell;
@@ -70,7 +74,7 @@ public static class IndoorBenchCases
         }
 
         // Land cells of one block share its frame: the sphere centres stay as they are.
-        return new IndoorBenchCase(name, what, scene, cell, spheres);
+        return new IndoorBenchCase(name, id, what, scene, cell, spheres);
     }
 
     private static Sphere[] Body(float x, float y)
