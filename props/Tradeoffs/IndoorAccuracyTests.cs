@@ -47,4 +47,11 @@ public sealed class IndoorAccuracyTests(ITestOutputHelper output)
         Assert.Equal(0, Any("box", "interior", "union-arm", "outdoor-near", "outdoor"));
         Assert.True(Any("l-shape", "union-arm") + Any("stairs", "union-arm") > 0, "an AABB covers a union's further pieces, which the BSP does not see");
     }
+
+    [Fact(DisplayName = "ACCURACY-INDOOR: two runs with one seed give the same counts (no dependence on thread scheduling)")]
+    public void Deterministic()
+    {
+        static string Counts(IndoorAccuracyReport r) => string.Join(";", r.Rows.Select(x => $"{x.Source}/{x.Shape}/{x.Class}:{x.Queries}/{x.Any}"));
+        Assert.Equal(Counts(IndoorAccuracyRun.Run(3, 6, 8)), Counts(IndoorAccuracyRun.Run(3, 6, 8)));
+    }
 }

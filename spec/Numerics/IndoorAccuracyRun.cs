@@ -73,7 +73,7 @@ public static class IndoorAccuracyRun
                     jobs.Add((Sources[0], name, scene, step.Query.Cell, [.. step.Query.Spheres]));
                 }
 
-                var random = new Random(HashCode.Combine(seed, k, (int)shape));
+                var random = new Random(unchecked((seed * 1_000_003) + (k * 31) + (int)shape)); // not HashCode.Combine: that is salted per process
                 for (int i = 0; i < scatter; i++)
                 {
                     foreach (var (position, spheres) in Scatter(scene, random))
