@@ -1,5 +1,6 @@
 using System.Numerics;
 using AcPhys.Core;
+using AcPhys.Spec.Scenes;
 
 namespace AcPhys.Cli.Bench;
 
@@ -30,7 +31,36 @@ internal static class BenchOps
         .. Modes("outdoor set", "3 spheres across lines", (array, fidelity) => Set(array, Body, fidelity)),
         .. Modes("find_cell_list outdoor", "corner, retail pick", (array, fidelity) => (long)CellQuery.FindCellListOutdoor(array, Position, Corner, CellId.None, PickPolicy.Retail, OpenLand.Instance, fidelity).Value),
         .. Modes("find_cell_list outdoor", "corner, current-first pick", (array, fidelity) => (long)CellQuery.FindCellListOutdoor(array, Position, Corner, new CellId(0xA9B40001), PickPolicy.CurrentFirst, OpenLand.Instance, fidelity).Value),
+        .. IndoorBenchCases.All.SelectMany(Indoor),
     ];
+
+    // find_cell_list in a scene (the case's options: a movement query unless stated), BSP cells then AABB cells.
+    private static IEnumerable<BenchOp> Indoor(IndoorBenchCase c)
+    {
+        foreach (var mode in new[] { VolumeMode.Bsp, VolumeMode.Aabb })
+        {
+            var scene = SceneBuild.Build(c.Description, mode);
+            var array = new CellArray();
+            var spheres = c.Spheres;
+            long Once()
+            {
+                var result = SceneQuery.FindCellList(array, scene, c.Position, spheres, c.Position, c.Options);
+                return result.Containing.Value + array.Count;
+            }
+
+            Once(); // grow the array once: steady state is allocation-free
+            yield return new BenchOp($"find_cell_list indoor, {c.Scene}", c.Name, mode == VolumeMode.Bsp ? "BSP" : "AABB", true, n =>
+            {
+                long sum = 0;
+                for (int i = 0; i < n; i++)
+                {
+                    sum += Once();
+                }
+
+                return sum;
+            });
+        }
+    }
 
     private static IEnumerable<BenchOp> Modes(string group, string name, Func<CellArray, OutdoorFidelity, long> body)
     {

@@ -14,15 +14,15 @@ internal static class TradeoffsCommand
         numerics.SetAction(_ => Guard.Run("tradeoffs numerics", NumericsReport.Run));
 
         var seed = new Option<int>("--seed") { Description = "Seed of the generated cases.", DefaultValueFactory = _ => 8, HelpName = "N" };
-        var cases = new Option<int>("--cases") { Description = "Queries per source (walks: a quarter as many walks).", DefaultValueFactory = _ => 20_000, HelpName = "N" };
-        var accuracy = new Command("accuracy", "Disagreement rate of the float32 and double modes against the exact oracle, by boundary class (docs/tradeoffs.md).") { seed, cases };
+        var cases = new Option<int>("--cases") { Description = "Queries per source (walks: a quarter as many walks; indoor: a fiftieth as many generated scenes).", DefaultValueFactory = _ => 20_000, HelpName = "N" };
+        var accuracy = new Command("accuracy", "Disagreement rate of the float32 and double modes against the exact oracle, and of AABB against BSP cells indoors, by boundary class (docs/tradeoffs.md).") { seed, cases };
         accuracy.SetAction(parse => Guard.Run("tradeoffs accuracy", () => AccuracyTable.Run(parse.GetValue(seed), Positive(parse.GetValue(cases), "--cases"))));
 
         var seeds = new Option<int>("--seeds") { Description = "Independent seeds per fault.", DefaultValueFactory = _ => 20, HelpName = "N" };
         var maxCases = new Option<int>("--max-cases") { Description = "Cap on generated cases per invariant.", DefaultValueFactory = _ => 20_000, HelpName = "N" };
         var outDir = new Option<string>("--out") { Description = "Directory for budget-samples.csv and budget-curve.csv.", HelpName = "DIR" };
         var fuzz = new Option<string>("--fuzz") { Description = "CSV of AFL++ time-to-first-crash per fault (docs/tradeoffs/fuzz-first-crash.csv).", HelpName = "FILE" };
-        var budget = new Command("budget", "Detection probability of every planted fault against the budget (cases and seconds), pr and fresh seeds (docs/tradeoffs.md).") { seeds, maxCases, outDir, fuzz };
+        var budget = new Command("budget", "Detection probability of every known-bug catalogue entry against the budget (cases and seconds), pr and fresh seeds (docs/tradeoffs.md).") { seeds, maxCases, outDir, fuzz };
         budget.SetAction(parse => Guard.Run("tradeoffs budget", () => BudgetReport.Run(
             Positive(parse.GetValue(seeds), "--seeds"), Positive(parse.GetValue(maxCases), "--max-cases"), parse.GetValue(outDir), parse.GetValue(fuzz))));
 

@@ -8,8 +8,9 @@ using static AcPhys.Cli.Tradeoffs.Markdown;
 namespace AcPhys.Cli.Tradeoffs;
 
 /// <summary>
-/// The verification budget curve (docs/tradeoffs.md): detection probability of every planted fault against the
-/// budget in cases per invariant and in seconds, for the pr profile (its fixed seed) and nightly-style fresh seeds;
+/// The verification budget curve (docs/tradeoffs.md): detection probability of every known-bug catalogue entry
+/// (outdoor and indoor) against the budget in cases per invariant and in seconds, for the pr profile (its fixed seed)
+/// and nightly-style fresh seeds;
 /// CSV files for the plot, and markdown tables.
 /// </summary>
 internal static class BudgetReport
@@ -29,20 +30,24 @@ internal static class BudgetReport
         Terminal.Line($"<!-- acphys tradeoffs budget --seeds {seeds} --max-cases {maxCases}; {Machine.Describe()} at start -->");
         var budgets = Budgets.Where(b => b <= maxCases).ToList();
         ulong prSeed = Profile.Pr.BaseSeed!.Value;
+        int prCases = Profile.Pr.CasesPerInvariant, nightlyCases = Profile.Nightly.CasesPerInvariant;
         const ulong master = 0x8B4D6E7_2026UL;
 
-        var rows = new List<(PlantedFault Fault, string? Sweep, DetectionSample Pr, List<DetectionSample> Fresh)>();
-        foreach (var fault in PlantedFaults.All)
+        // Every known-bug catalogue entry whose fault exists, with the catalogue's own catchers.
+        var bugs = KnownBugCatalogue.All.Where(b => b.IsAvailable).ToList();
+        var rows = new List<(KnownBug Bug, bool Indoor, string? Sweep, DetectionSample Pr, List<DetectionSample> Fresh)>();
+        foreach (var bug in bugs)
         {
-            var pr = BudgetCurve.Measure(fault, prSeed, maxCases);
+            var fault = bug.PlantedFault!;
+            var pr = BudgetCurve.Measure(fault, prSeed, Math.Max(maxCases, prCases), bug.CaughtBy);
             var fresh = new List<DetectionSample>();
             for (int i = 0; i < seeds; i++)
             {
-                fresh.Add(BudgetCurve.Measure(fault, BudgetCurve.SeedAt(master, i), maxCases));
+                fresh.Add(BudgetCurve.Measure(fault, BudgetCurve.SeedAt(master, i), maxCases, bug.CaughtBy));
             }
 
-            rows.Add((fault, BudgetCurve.CaughtBySweeps(fault), pr, fresh));
-            Console.Error.WriteLine($"  {fault.Id}: pr {pr.CasesToDetect?.ToString(CultureInfo.InvariantCulture) ?? "-"}, fresh median {Median(fresh)}");
+            rows.Add((bug, IndoorFaults.All.Contains(fault), BudgetCurve.CaughtBySweeps(fault), pr, fresh));
+            Console.Error.WriteLine($"  {bug.Id}: pr {pr.CasesToDetect?.ToString(CultureInfo.InvariantCulture) ?? "-"}, fresh median {Median(fresh)}");
         }
 
         // The seconds axis: the catalogue's cost per case, timed at the largest budget (small budgets are all timer
@@ -53,15 +58,18 @@ internal static class BudgetReport
         var seconds = budgets.ToDictionary(b => b, b => b * perCase);
         Terminal.Line($"<!-- catalogue timed; {Machine.Describe()} -->");
 
-        Terminal.Line($"**Detection probability by budget** (generated cases per invariant; {seeds} independent seeds; sweeps not counted):");
+        Terminal.Line($"**Detection probability by budget**: every known-bug catalogue entry ({rows.Count}: {rows.Count(r => !r.Indoor)} outdoor, {rows.Count(r => r.Indoor)} indoor), its catalogue catchers only; generated cases per invariant; {seeds} fresh seeds; sweeps not counted. "
+            + $"pr profile = its fixed seed at {N(prCases)} cases; nightly profile = fresh seeds at {N(nightlyCases)} cases, so its detection probability is at least P@{N(budgets.Max())}:");
         Terminal.Line();
         Table(
-            ["fault", .. budgets.Select(b => $"P@{N(b)}"), "median cases", "worst", "pr seed", "sweeps", "AFL++ first crash"],
+            ["bug (fault)", "scope", .. budgets.Select(b => $"P@{N(b)}"), "median cases", "worst", $"pr profile (fixed seed, {N(prCases)})", $"nightly profile (P ≥)", "sweeps", "AFL++ first crash"],
             rows.Select(r => (IReadOnlyList<string>)
             [
-                r.Fault.Id, .. budgets.Select(b => P(BudgetCurve.Probability(r.Fresh, b))), Median(r.Fresh), Worst(r.Fresh, maxCases),
-                r.Pr.CasesToDetect is long k ? $"{N(k)} ({r.Pr.Invariant})" : $"> {N(maxCases)}", r.Sweep ?? "—",
-                fuzz.TryGetValue(r.Fault.Id, out var f) ? f : "not fuzzed",
+                r.Bug.Id == r.Bug.Fault ? r.Bug.Id : $"{r.Bug.Id} ({r.Bug.Fault})", r.Indoor ? "indoor" : "outdoor",
+                .. budgets.Select(b => P(BudgetCurve.Probability(r.Fresh, b))), Median(r.Fresh), Worst(r.Fresh, maxCases),
+                r.Pr.CasesToDetect is long k && k <= prCases ? $"caught at {N(k)} ({r.Pr.Invariant})" : $"missed within {N(prCases)}", P(BudgetCurve.Probability(r.Fresh, maxCases)),
+                r.Sweep ?? "—",
+                fuzz.TryGetValue(r.Bug.Fault, out var f) ? f : r.Indoor ? "see docs/fuzzing.md" : "not fuzzed",
             ]));
 
         Terminal.Line($"**Seconds per budget**: the whole catalogue (every invariant, generated cases only) against the reference; model = {perCase * 1e3:0.###} ms per case per invariant-set (timed at {N(budgets.Max())}):");
@@ -70,28 +78,28 @@ internal static class BudgetReport
             ["cases per invariant", "seconds (model)", "seconds (measured)"],
             budgets.Select(b => (IReadOnlyList<string>)
             [
-                N(b), seconds[b].ToString(seconds[b] < 1 ? "0.0000" : "0.0", CultureInfo.InvariantCulture),
+                b == prCases ? $"{N(b)} (pr profile)" : N(b), seconds[b].ToString(seconds[b] < 1 ? "0.0000" : "0.0", CultureInfo.InvariantCulture),
                 measured.TryGetValue(b, out double m) ? m.ToString("0.0", CultureInfo.InvariantCulture) : "—",
-            ]));
-        Terminal.Line($"Profiles: pr = {N(Profile.Pr.CasesPerInvariant)} cases per invariant, fixed seed, plus sweeps; nightly = {N(Profile.Nightly.CasesPerInvariant)}, fresh seeds, plus sweeps.");
+            ]).Append([$"{N(nightlyCases)} (nightly profile)", (nightlyCases * perCase).ToString("0", CultureInfo.InvariantCulture), "—"]));
+        Terminal.Line($"Profiles: pr = {N(prCases)} cases per invariant, fixed seed, plus sweeps; nightly = {N(nightlyCases)}, fresh seeds, plus sweeps.");
         Terminal.Line($"<!-- {Machine.Describe()} at end -->");
 
         if (outDir is not null)
         {
             Directory.CreateDirectory(outDir);
             var samples = new StringBuilder("fault,seed_kind,seed,cases_to_detect,invariant,seconds\n");
-            var curve = new StringBuilder("fault,cases,seconds,p_generated,p_with_sweeps,pr_detected\n");
-            foreach (var (fault, sweep, pr, fresh) in rows)
+            var curve = new StringBuilder("fault,cases,seconds,p_generated,p_with_sweeps,pr_detected,scope\n");
+            foreach (var (bug, indoor, sweep, pr, fresh) in rows)
             {
                 foreach (var (kind, s) in fresh.Select(s => ("fresh", s)).Prepend(("pr", pr)))
                 {
-                    samples.Append(CultureInfo.InvariantCulture, $"{fault.Id},{kind},{s.Seed},{s.CasesToDetect?.ToString(CultureInfo.InvariantCulture) ?? string.Empty},{s.Invariant},{s.Elapsed.TotalSeconds:0.###}\n");
+                    samples.Append(CultureInfo.InvariantCulture, $"{bug.Id},{kind},{s.Seed},{s.CasesToDetect?.ToString(CultureInfo.InvariantCulture) ?? string.Empty},{s.Invariant},{s.Elapsed.TotalSeconds:0.###}\n");
                 }
 
                 foreach (int b in budgets)
                 {
                     double p = BudgetCurve.Probability(fresh, b);
-                    curve.Append(CultureInfo.InvariantCulture, $"{fault.Id},{b},{seconds[b]:0.######},{p:0.###},{(sweep is null ? p : 1):0.###},{(pr.CasesToDetect <= b ? 1 : 0)}\n");
+                    curve.Append(CultureInfo.InvariantCulture, $"{bug.Id},{b},{seconds[b]:0.######},{p:0.###},{(sweep is null ? p : 1):0.###},{(pr.CasesToDetect <= b ? 1 : 0)},{(indoor ? "indoor" : "outdoor")}\n");
                 }
             }
 

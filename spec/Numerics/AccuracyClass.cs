@@ -5,7 +5,8 @@ namespace AcPhys.Spec.Numerics;
 
 /// <summary>
 /// The boundary class of an outdoor query for the accuracy tables: where the nearest boundary is that a sphere's
-/// centre or disc edge sits on (within <see cref="Band"/>). Indoor adds "portal-straddle" when scenes exist.
+/// centre or disc edge sits on (within <see cref="Band"/>). Indoor classes, "portal-straddle" among them:
+/// <see cref="IndoorAccuracyClass"/>.
 /// </summary>
 public static class AccuracyClass
 {

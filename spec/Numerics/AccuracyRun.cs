@@ -34,7 +34,7 @@ public sealed record AccuracyReport(IReadOnlyList<AccuracyRow> Rows, IReadOnlyLi
 /// <summary>
 /// Measures how often each fidelity mode (retail float32, double reference) disagrees with the exact rational oracle,
 /// over the suite's generated queries, fine-mantissa queries (<see cref="FineFloats"/>) and every step of generated
-/// walks, split by boundary class. Indoor modes (BSP vs AABB) and the portal-straddle class add rows when scenes exist.
+/// walks, split by boundary class. Indoors, <see cref="IndoorAccuracyRun"/> compares the AABB cells with the BSP.
 /// </summary>
 public static class AccuracyRun
 {

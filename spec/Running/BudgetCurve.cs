@@ -26,14 +26,15 @@ public static class BudgetCurve
     /// <param name="fault">The fault.</param>
     /// <param name="baseSeed">The base seed; each invariant's seed is derived from it as the profiles do.</param>
     /// <param name="maxCases">The cap: cases per invariant.</param>
+    /// <param name="catchers">The invariants that count as catching it; default the fault's own <see cref="PlantedFault.CaughtBy"/> (a known-bug entry passes its <see cref="KnownBug.CaughtBy"/>).</param>
     /// <returns>The sample.</returns>
-    public static DetectionSample Measure(PlantedFault fault, ulong baseSeed, int maxCases)
+    public static DetectionSample Measure(PlantedFault fault, ulong baseSeed, int maxCases, IReadOnlyList<string>? catchers = null)
     {
         var stopwatch = Stopwatch.StartNew();
         var impl = PlantedFaults.Create(fault.Id);
         long? best = null;
         string? by = null;
-        foreach (string id in fault.CaughtBy)
+        foreach (string id in catchers ?? fault.CaughtBy)
         {
             var invariant = InvariantCatalogue.Find(id);
             if (invariant is null || !invariant.IsTestable(impl))
