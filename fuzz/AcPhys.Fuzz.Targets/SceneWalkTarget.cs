@@ -20,16 +20,39 @@ public sealed class SceneWalkTarget : PhysicsTarget<SceneWalk>
     /// <inheritdoc/>
     public override string Description => "every indoor invariant on a scene walk (SceneCodec: cottage or dungeon, placement, body, route)";
 
-    // Short walks in plain scenes: the zero input (a one-room cottage, walked into), a 6 m room entered and left, and a
-    // dungeon run. The cottage corpus cases (which already expose five planted faults) are in corpus/fuzz/scene.
+    // Plain scenes: the zero input (a one-room cottage, walked into), a 6 m room entered and left, a dungeon run, and
+    // "outside-two-steps" (the zero cottage, two steps toward its door, never inside), which passes under every indoor
+    // fault that does not fail on every walk, so afl-fuzz always has a passing seed to mutate. The cottage corpus cases
+    // are in corpus/fuzz/scene.
 
     /// <inheritdoc/>
     public override IReadOnlyDictionary<string, byte[]> Seeds { get; } = new Dictionary<string, byte[]>
     {
         ["zeros"] = new byte[SceneCodec.Length],
         ["one-room-in-and-back"] = [0x00, 0x00, 0x08, 0x08, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x30, 0x30, 0x40, 0x40, 0x01, 0x00, 0x04, 0x04, 0x00],
+        ["outside-two-steps"] = [0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x02],
         ["dungeon-run"] = [0x05, 0x01, 0x10, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x30, 0x30, 0x14, 0x14, 0x00, 0x00, 0x04, 0x04, 0x00],
     };
+
+    /// <summary>
+    /// Builds the test with a fresh implementation per input: an indoor fault may keep state between queries
+    /// (<c>stale-scene-array</c> keeps its cell array), and afl-fuzz's inputs must not see each other's state, so a
+    /// crash is the input's own and triage (which starts from a fresh implementation) reproduces it.
+    /// </summary>
+    /// <param name="fault">A planted fault id, or null for the correct core.</param>
+    /// <returns>The test.</returns>
+    /// <exception cref="ArgumentException">The fault is unknown.</exception>
+    public override Action<ReadOnlySpan<byte>> CreateTest(string? fault)
+    {
+        _ = Implementations.For(fault); // an unknown fault is rejected now, not at the first input
+        return data =>
+        {
+            if (Check(Implementations.For(fault), Decode(data)) is { } violation)
+            {
+                throw new InvariantViolationException(violation);
+            }
+        };
+    }
 
     /// <inheritdoc/>
     public override SceneWalk Decode(ReadOnlySpan<byte> data) => SceneCodec.DecodeWalk(data);
