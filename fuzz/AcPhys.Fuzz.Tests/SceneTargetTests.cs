@@ -47,6 +47,21 @@ public sealed class SceneTargetTests
         }
     }
 
+    [Theory]
+    [InlineData("ff53c8fefffb7f35b737154000f158fb2c")]
+    [InlineData("000701ffff97fa00011200ffec97fa00011200fc1c22f5fa")]
+    public void A_line_jitter_beside_a_yawed_cottage_stays_outdoors(string hex)
+    {
+        // Found by a correct-core campaign: a quarter-turned cottage whose wall lay on the nearest 24 m line, so the
+        // LineJitter walk started in the room and stepped out through the wall (NEVER-NULL, PORTAL-TRANSIT on the
+        // reference). The recipe now takes the nearest line clear of the footprint; the inputs hold.
+        byte[] input = Convert.FromHexString(hex);
+        var sw = Target.Decode(input);
+
+        Assert.Equal(SceneRoute.LineJitter, sw.Recipe!.Route);
+        Assert.Null(Target.Classify(input, null));
+    }
+
     [Fact]
     public void The_scene_seed_corpus_decodes_to_the_cottage_corpus_cases()
     {

@@ -144,8 +144,7 @@ public sealed record SceneRecipe(CottagePlan? Cottage, DungeonPlan? Dungeon, Sce
             case SceneRoute.LineJitter:
                 // Jitter across the 24 m line nearest the front door, outdoors in front of the cottage.
                 var world = p.ToBlock(outside);
-                float line = MathF.Round(world.X / 24f) * 24f;
-                var local = new Vector3(line, world.Y, 0);
+                var local = new Vector3(LineNear(p, world), world.Y, 0);
                 path = [local];
                 for (int i = 0; i < 6; i++)
                 {
@@ -162,6 +161,33 @@ public sealed record SceneRecipe(CottagePlan? Cottage, DungeonPlan? Dungeon, Sce
         }
 
         return (start, [.. path.Select(p.ToBlock)]);
+    }
+
+    // The x of the 24 m line nearest a block-frame point such that the line's crossing (and the jitter around it) stays
+    // clear of the cottage's footprint: with yaw, the nearest line can fall inside a room or on a wall, and a walk
+    // that starts there steps through the wall (no portal), which no client can do. Found by the scene fuzz target
+    // (a quarter-turned cottage whose back wall lies on the line: NEVER-NULL and PORTAL-TRANSIT on the reference).
+    private float LineNear(CottagePlan p, Vector3 world)
+    {
+        int nearest = (int)MathF.Round(world.X / 24f);
+        var frame = new Frame(p.Origin, p.Rotation);
+        float margin = Radius + Jitter + 0.25f;
+        bool Clear(float x)
+        {
+            var q = frame.GlobalToLocal(new Vector3(x, world.Y, 0));
+            return q.X < -margin || q.X > (p.Rooms * p.Width) + margin || q.Y < -margin || q.Y > p.Depth + margin;
+        }
+
+        foreach (int k in new[] { 0, -1, 1, -2, 2, -3, 3 }.Select(d => nearest + d).OrderBy(k => MathF.Abs((24f * k) - world.X)))
+        {
+            double worldX = (192.0 * p.Block.X) + (24.0 * k);
+            if (Clear(24f * k) && (k == nearest || worldX is >= 24 and <= (192.0 * 0xFF) - 24))
+            {
+                return 24f * k;
+            }
+        }
+
+        return world.X; // no clear line nearby: jitter in front of the door, where the walk is outdoors
     }
 
     private (CellId Start, List<Vector3> Points) DungeonRoute(DungeonPlan p)
