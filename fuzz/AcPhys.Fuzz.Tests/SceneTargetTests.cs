@@ -63,6 +63,24 @@ public sealed class SceneTargetTests
     }
 
     [Fact]
+    public void A_walk_onto_an_unloaded_neighbour_block_is_built_with_the_neighbours_loaded()
+    {
+        // Found by a correct-core campaign: a yawed cottage 1 m short of its block's north line, neighbours unloaded,
+        // walked in and back out: the centre left the room onto the unloaded block and the body was lost
+        // (PORTAL-TRANSIT, NEVER-NULL on the reference). A client always has its neighbour blocks loaded.
+        byte[] input = Convert.FromHexString("00fa0000fa6e7474747474000000730000");
+        var sw = Target.Decode(input);
+
+        Assert.True(sw.Recipe!.Cottage!.LoadNeighbours);
+        Assert.Empty(sw.Scene.UnloadedBlocks);
+        Assert.Null(Target.Classify(input, null));
+        var inBlock = new byte[SceneCodec.Length];
+        inBlock[8] = 4; // neighbours unloaded
+        inBlock[13] = 100; // 100 m into the block: the walk stays in it
+        Assert.Equal(8, Target.Decode(inBlock).Scene.UnloadedBlocks.Count); // the flag still works
+    }
+
+    [Fact]
     public void The_scene_seed_corpus_decodes_to_the_cottage_corpus_cases()
     {
         foreach (var (seed, file) in CottageSeeds)

@@ -76,6 +76,15 @@ public sealed record SceneRecipe(CottagePlan? Cottage, DungeonPlan? Dungeon, Sce
             }
         }
 
+        if (Cottage is { LoadNeighbours: false } unloaded && LeavesBlock(points[0], steps.Take(Take)))
+        {
+            // A client always has the blocks around it loaded, so a walk whose centre crosses into an unloaded
+            // neighbour block is outside the model (leaving a room through its door onto unloaded land, the body is
+            // lost for good: NEVER-NULL, PORTAL-TRANSIT on the reference). Such a recipe is built with its neighbours
+            // loaded. Found by the scene fuzz target (a yawed cottage 1 m short of a block line, door facing it).
+            return (this with { Cottage = unloaded with { LoadNeighbours = true } }).Build();
+        }
+
         BodySphere[] body = TwoSpheres
             ? [new BodySphere(new Vector3(0, 0, 0.6f), Radius), new BodySphere(new Vector3(0, 0, 1.3f), Radius)]
             : [new BodySphere(new Vector3(0, 0, 0.6f), Radius)];
@@ -161,6 +170,28 @@ public sealed record SceneRecipe(CottagePlan? Cottage, DungeonPlan? Dungeon, Sce
         }
 
         return (start, [.. path.Select(p.ToBlock)]);
+    }
+
+    // Whether the walk's centre, from start (home block frame) through the steps, ever leaves the home block.
+    private static bool LeavesBlock(Vector3 start, IEnumerable<Vector2> steps)
+    {
+        var p = new Vector2(start.X, start.Y);
+        static bool Outside(Vector2 q) => q.X < 0 || q.Y < 0 || q.X >= 192 || q.Y >= 192;
+        if (Outside(p))
+        {
+            return true;
+        }
+
+        foreach (var d in steps)
+        {
+            p += d;
+            if (Outside(p))
+            {
+                return true;
+            }
+        }
+
+        return false;
     }
 
     // The x of the 24 m line nearest a block-frame point such that the line's crossing (and the jitter around it) stays
