@@ -80,6 +80,22 @@ public sealed class SceneTargetTests
         Assert.Equal(8, Target.Decode(inBlock).Scene.UnloadedBlocks.Count); // the flag still works
     }
 
+    [Theory]
+    [InlineData("3a3a3a3a3a3a3a353a3f3a3a3a3a803a3a3a3a3a3a3a3a00e60197a59707ff00640006")]
+    [InlineData("c17f190010c1feef64ffe4800000c8c86565656565656565")]
+    public void A_walk_stops_before_it_leaves_the_map(string hex)
+    {
+        // Found by a correct-core campaign: a cottage at the west map edge, yawed so its rooms overhang the edge,
+        // walked through and out of its back door onto no land; back on the map the body was lost (NEVER-NULL,
+        // PORTAL-TRANSIT on the reference). The walk now ends before its centre would leave the map.
+        byte[] input = Convert.FromHexString(hex);
+        var sw = Target.Decode(input);
+
+        Assert.Equal(0, sw.Recipe!.Cottage!.Block.X);
+        Assert.True(sw.Walk.Steps.Count < sw.Recipe.Take, $"not cut: {sw.Walk.Steps.Count} steps");
+        Assert.Null(Target.Classify(input, null));
+    }
+
     [Fact]
     public void The_scene_seed_corpus_decodes_to_the_cottage_corpus_cases()
     {

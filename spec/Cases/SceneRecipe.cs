@@ -85,10 +85,16 @@ public sealed record SceneRecipe(CottagePlan? Cottage, DungeonPlan? Dungeon, Sce
             return (this with { Cottage = unloaded with { LoadNeighbours = true } }).Build();
         }
 
+        // Likewise a walk has no business off the map: a cottage at the west edge, yawed so that its rooms overhang the
+        // edge, walked through and out of its back door onto no land is lost for good. The walk stops before its centre
+        // would leave the map (found by the scene fuzz target).
+        var home = Cottage?.Block ?? Dungeon!.Block;
+        int take = Math.Min(Take, OnMapSteps(new Vector2(192f * home.X, 192f * home.Y), points[0], steps));
+
         BodySphere[] body = TwoSpheres
             ? [new BodySphere(new Vector3(0, 0, 0.6f), Radius), new BodySphere(new Vector3(0, 0, 1.3f), Radius)]
             : [new BodySphere(new Vector3(0, 0, 0.6f), Radius)];
-        var walk = new Walk(startCell, points[0], body, [.. steps.Take(Take)]);
+        var walk = new Walk(startCell, points[0], body, [.. steps.Take(take)]);
         if (!startCell.IsEnv)
         {
             walk = walk.Normalised();
@@ -170,6 +176,24 @@ public sealed record SceneRecipe(CottagePlan? Cottage, DungeonPlan? Dungeon, Sce
         }
 
         return (start, [.. path.Select(p.ToBlock)]);
+    }
+
+    // How many leading steps keep the walk's centre on the map (start and steps in the home block's frame).
+    private static int OnMapSteps(Vector2 blockOrigin, Vector3 start, List<Vector2> steps)
+    {
+        const double edge = 192.0 * (LandDefs.MaxBlockByte + 1), margin = 1.0 / 64;
+        double x = blockOrigin.X + (double)start.X, y = blockOrigin.Y + (double)start.Y;
+        for (int i = 0; i < steps.Count; i++)
+        {
+            x += steps[i].X;
+            y += steps[i].Y;
+            if (x < margin || y < margin || x >= edge - margin || y >= edge - margin)
+            {
+                return i;
+            }
+        }
+
+        return steps.Count;
     }
 
     // Whether the walk's centre, from start (home block frame) through the steps, ever leaves the home block.
