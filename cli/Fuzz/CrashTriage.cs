@@ -80,13 +80,17 @@ internal sealed class CrashTriage(FuzzSettings s)
         return new TriageGroup(key, signature, count, file, raw, replay, true, had);
     }
 
-    // The file must fail the same way in `acphys replay` (the same checks replay runs), under the campaign's fault.
+    // The file must fail the same way in `acphys replay` (the same checks replay runs: SceneWalkReplay checks every
+    // testable indoor invariant, as CheckSceneWalk does), under the campaign's fault.
     private bool Reproduces(CorpusEntry entry)
     {
         var impl = Implementations.For(s.Fault);
-        return entry.Walk is { } walk
-            ? WalkReplay.Check(impl, walk).FirstViolatingStep is not null
-            : InvariantCatalogue.CheckLandCase(impl, entry.Case!.Value) is not null;
+        return entry switch
+        {
+            { SceneWalk: { } sw } => InvariantCatalogue.CheckSceneWalk(impl, sw) is not null,
+            { Walk: { } walk } => WalkReplay.Check(impl, walk).FirstViolatingStep is not null,
+            _ => InvariantCatalogue.CheckLandCase(impl, entry.Case!.Value) is not null,
+        };
     }
 
     private string ReplayCommand(string path)

@@ -4,6 +4,7 @@
 # the invariants of the regressions triage wrote, and whether `acphys replay FILE --fault F` reproduced each of them.
 #
 #   fuzz/tests/first-crash.sh [RUNS] [FAULT...]      (default 5 runs, every fault a target reaches)
+#   MINUTES=2 fuzz/tests/first-crash.sh 3 no-reframe  (cap each run at MINUTES of afl time; default 5)
 # Needs a build (./acphys fuzz ... once). Results go to .fuzz/first-crash/.
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
@@ -13,10 +14,15 @@ declare -A target_of=(
     [no-eps-snap]=land [inbound-x-only]=land
     [clamp-106]=walk [in-cell-neighbours]=walk [else-diagonal]=walk [sphere-guard-inverted]=walk [sphere-leak]=walk
     [no-reset]=walk [no-hysteresis]=walk [sticky-pick]=walk
+    [outdoor-wins]=scene [no-hysteresis-indoor]=scene [inverted-portal-side]=scene [no-visibility-filter]=scene
+    [no-reframe]=scene [stale-scene-array]=scene [ace-hint-key]=scene [keep-current-on-miss]=scene [no-exit-transit]=scene
 )
+minutes=${MINUTES:-5}
 faults=("$@")
 ((${#faults[@]} > 0)) || faults=(trunc-floor nan-as-zero map-edge-2040 sign-extend-by drop-block-length no-eps-snap inbound-x-only
-    clamp-106 in-cell-neighbours else-diagonal sphere-guard-inverted sphere-leak no-reset no-hysteresis sticky-pick)
+    clamp-106 in-cell-neighbours else-diagonal sphere-guard-inverted sphere-leak no-reset no-hysteresis sticky-pick
+    outdoor-wins no-hysteresis-indoor inverted-portal-side no-visibility-filter no-reframe stale-scene-array ace-hint-key
+    keep-current-on-miss no-exit-transit)
 out=$root/.fuzz/first-crash
 mkdir -p "$out"
 echo "| fault | target | seeds failing | median afl time | median execs | runs (afl time s @ execs) | regressions (invariant × files) | replay reproduces |"
@@ -32,7 +38,7 @@ for fault in "${faults[@]}"; do
     for ((i = 1; i <= runs; i++)); do
         log=$out/$fault/run$i.txt
         mkdir -p "$out/$fault"
-        "$root/acphys" fuzz --target "$target" --fault "$fault" --minutes 5 --until-crash --fresh --no-build --quiet \
+        "$root/acphys" fuzz --target "$target" --fault "$fault" --minutes "$minutes" --until-crash --fresh --no-build --quiet \
             --campaign "$out/$fault/campaign$i" --regressions "$regs" >"$log" 2>&1 || true
         line=$(grep -m1 'time to first crash:' "$log" || echo "time to first crash: none")
         seeded=$(sed -n 's/.*found by \([0-9]*\) seed.*/\1/p' <<<"$line")

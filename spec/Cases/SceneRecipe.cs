@@ -76,10 +76,25 @@ public sealed record SceneRecipe(CottagePlan? Cottage, DungeonPlan? Dungeon, Sce
             }
         }
 
+        if (Cottage is { LoadNeighbours: false } unloaded && LeavesBlock(points[0], steps.Take(Take)))
+        {
+            // A client always has the blocks around it loaded, so a walk whose centre crosses into an unloaded
+            // neighbour block is outside the model (leaving a room through its door onto unloaded land, the body is
+            // lost for good: NEVER-NULL, PORTAL-TRANSIT on the reference). Such a recipe is built with its neighbours
+            // loaded. Found by the scene fuzz target (a yawed cottage 1 m short of a block line, door facing it).
+            return (this with { Cottage = unloaded with { LoadNeighbours = true } }).Build();
+        }
+
+        // Likewise a walk has no business off the map: a cottage at the west edge, yawed so that its rooms overhang the
+        // edge, walked through and out of its back door onto no land is lost for good. The walk stops before its centre
+        // would leave the map (found by the scene fuzz target).
+        var home = Cottage?.Block ?? Dungeon!.Block;
+        int take = Math.Min(Take, OnMapSteps(new Vector2(192f * home.X, 192f * home.Y), points[0], steps));
+
         BodySphere[] body = TwoSpheres
             ? [new BodySphere(new Vector3(0, 0, 0.6f), Radius), new BodySphere(new Vector3(0, 0, 1.3f), Radius)]
             : [new BodySphere(new Vector3(0, 0, 0.6f), Radius)];
-        var walk = new Walk(startCell, points[0], body, [.. steps.Take(Take)]);
+        var walk = new Walk(startCell, points[0], body, [.. steps.Take(take)]);
         if (!startCell.IsEnv)
         {
             walk = walk.Normalised();
@@ -144,8 +159,7 @@ public sealed record SceneRecipe(CottagePlan? Cottage, DungeonPlan? Dungeon, Sce
             case SceneRoute.LineJitter:
                 // Jitter across the 24 m line nearest the front door, outdoors in front of the cottage.
                 var world = p.ToBlock(outside);
-                float line = MathF.Round(world.X / 24f) * 24f;
-                var local = new Vector3(line, world.Y, 0);
+                var local = new Vector3(LineNear(p, world), world.Y, 0);
                 path = [local];
                 for (int i = 0; i < 6; i++)
                 {
@@ -162,6 +176,73 @@ public sealed record SceneRecipe(CottagePlan? Cottage, DungeonPlan? Dungeon, Sce
         }
 
         return (start, [.. path.Select(p.ToBlock)]);
+    }
+
+    // How many leading steps keep the walk's centre on the map (start and steps in the home block's frame).
+    private static int OnMapSteps(Vector2 blockOrigin, Vector3 start, List<Vector2> steps)
+    {
+        const double edge = 192.0 * (LandDefs.MaxBlockByte + 1), margin = 1.0 / 64;
+        double x = blockOrigin.X + (double)start.X, y = blockOrigin.Y + (double)start.Y;
+        for (int i = 0; i < steps.Count; i++)
+        {
+            x += steps[i].X;
+            y += steps[i].Y;
+            if (x < margin || y < margin || x >= edge - margin || y >= edge - margin)
+            {
+                return i;
+            }
+        }
+
+        return steps.Count;
+    }
+
+    // Whether the walk's centre, from start (home block frame) through the steps, ever leaves the home block.
+    private static bool LeavesBlock(Vector3 start, IEnumerable<Vector2> steps)
+    {
+        var p = new Vector2(start.X, start.Y);
+        static bool Outside(Vector2 q) => q.X < 0 || q.Y < 0 || q.X >= 192 || q.Y >= 192;
+        if (Outside(p))
+        {
+            return true;
+        }
+
+        foreach (var d in steps)
+        {
+            p += d;
+            if (Outside(p))
+            {
+                return true;
+            }
+        }
+
+        return false;
+    }
+
+    // The x of the 24 m line nearest a block-frame point such that the line's crossing (and the jitter around it) stays
+    // clear of the cottage's footprint: with yaw, the nearest line can fall inside a room or on a wall, and a walk
+    // that starts there steps through the wall (no portal), which no client can do. Found by the scene fuzz target
+    // (a quarter-turned cottage whose back wall lies on the line: NEVER-NULL and PORTAL-TRANSIT on the reference).
+    private float LineNear(CottagePlan p, Vector3 world)
+    {
+        int nearest = (int)MathF.Round(world.X / 24f);
+        var frame = new Frame(p.Origin, p.Rotation);
+        float margin = Radius + Jitter + 0.25f;
+        bool Clear(float x)
+        {
+            var q = frame.GlobalToLocal(new Vector3(x, world.Y, 0));
+            return q.X < -margin || q.X > (p.Rooms * p.Width) + margin || q.Y < -margin || q.Y > p.Depth + margin;
+        }
+
+        foreach (int k in new[] { 0, -1, 1, -2, 2, -3, 3 }.Select(d => nearest + d).OrderBy(k => MathF.Abs((24f * k) - world.X)))
+        {
+            double worldX = (192.0 * p.Block.X) + (24.0 * k);
+            if (Clear(24f * k) && (k == nearest || worldX is >= 24 and <= (192.0 * 0xFF) - 24))
+            {
+                return 24f * k;
+            }
+        }
+
+        return world.X; // no clear line nearby: jitter in front of the door, where the walk is outdoors
     }
 
     private (CellId Start, List<Vector3> Points) DungeonRoute(DungeonPlan p)
