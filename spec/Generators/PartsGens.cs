@@ -33,7 +33,10 @@ public static class PartsGens
     /// <summary>Gets the arbitrary: drop parts, then simplify the anchor's origin.</summary>
     public static Arbitrary<PartsCase> Arbitrary { get; } = Arb.From(Cases, Shrink);
 
-    private static IEnumerable<PartsCase> Shrink(PartsCase c)
+    /// <summary>Returns simpler queries: each part but the anchor dropped, then per part no rotation and simpler x, y.</summary>
+    /// <param name="c">The query.</param>
+    /// <returns>Candidates.</returns>
+    public static IEnumerable<PartsCase> Shrink(PartsCase c)
     {
         for (int i = c.Parts.Count - 1; i >= 1; i--)
         {
