@@ -108,7 +108,7 @@ public static class CorpusJson
             var version = Prop(root, "version", source);
             Require(version.ValueKind == JsonValueKind.Number && version.TryGetInt32(out int v) && v == CorpusEntry.CurrentVersion, source, "$.version", $"expected {CorpusEntry.CurrentVersion}");
             string kind = Str(root, "kind", source);
-            Require(kind is "land" or "walk" or "scene-walk" or "parts", source, "$.kind", "expected \"land\", \"walk\", \"scene-walk\" or \"parts\"");
+            Require(kind is "land" or "walk" or "scene-walk" or "parts", source, "$.kind", "expected \"land\" or \"walk\" (or \"scene-walk\", \"parts\")");
             string title = Str(root, "title", source);
             string foundBy = Str(root, "foundBy", source);
             Require(foundBy is "hand" or "props" or "fuzz" or "spec" or "diff", source, "$.foundBy", "expected hand, props, fuzz, spec or diff");
