@@ -115,6 +115,7 @@ public sealed class PartsTargetTests
         Assert.Equal(finding.Key, InvariantCatalogue.CheckEntry(PlantedFaults.Create(fault), read)?.InvariantId);
         Assert.Null(InvariantCatalogue.CheckEntry(ReferenceAdapter.Instance, read));
         Assert.StartsWith(finding.Key + "-", FailureFile.NameFor(entry), StringComparison.Ordinal);
+        Assert.NotEqual(finding.Case!.ToString(), read.Parts!.ToString()); // shrunk (origin, box or radius made simpler)
     }
 
     [Theory]
