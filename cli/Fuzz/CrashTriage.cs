@@ -81,12 +81,14 @@ internal sealed class CrashTriage(FuzzSettings s)
     }
 
     // The file must fail the same way in `acphys replay` (the same checks replay runs: SceneWalkReplay checks every
-    // testable indoor invariant, as CheckSceneWalk does), under the campaign's fault.
+    // testable indoor invariant, as CheckSceneWalk does; PartsReplay every testable parts invariant, as CheckParts does),
+    // under the campaign's fault.
     private bool Reproduces(CorpusEntry entry)
     {
         var impl = Implementations.For(s.Fault);
         return entry switch
         {
+            { Parts: { } parts } => InvariantCatalogue.CheckParts(impl, parts) is not null,
             { SceneWalk: { } sw } => InvariantCatalogue.CheckSceneWalk(impl, sw) is not null,
             { Walk: { } walk } => WalkReplay.Check(impl, walk).FirstViolatingStep is not null,
             _ => InvariantCatalogue.CheckLandCase(impl, entry.Case!.Value) is not null,

@@ -6,7 +6,7 @@ namespace AcPhys.Cli.Replay;
 internal static class ReplayInputs
 {
     /// <summary>Gets every known input kind; the first is the default when a file does not say.</summary>
-    public static IReadOnlyList<IReplayInput> All { get; } = [new LandCaseReplay(), new WalkReplay(), new SceneWalkReplay()];
+    public static IReadOnlyList<IReplayInput> All { get; } = [new LandCaseReplay(), new WalkReplay(), new SceneWalkReplay(), new PartsReplay()];
 
     /// <summary>
     /// Chooses the input for a file by its top-level <c>kind</c> field. A file that cannot be read, is not JSON or has

@@ -31,7 +31,7 @@ public sealed class TargetTests
     {
         var names = FuzzTargets.All.Select(t => t.Name).ToArray();
 
-        Assert.Equal(["land", "scene", "walk", "corpus", "walk-json", "toy", "toy-slow"], names);
+        Assert.Equal(["land", "parts", "scene", "walk", "corpus", "walk-json", "toy", "toy-slow"], names);
         Assert.Equal(names.Length, names.Distinct().Count());
     }
 
@@ -49,6 +49,7 @@ public sealed class TargetTests
     [InlineData("land")]
     [InlineData("walk")]
     [InlineData("scene")]
+    [InlineData("parts")]
     public void Physics_targets_reach_the_physics_on_any_bytes(string name)
     {
         // No input may stop in a parser: random bytes decode and are checked, and none fails on the correct core.

@@ -16,13 +16,14 @@ declare -A target_of=(
     [no-reset]=walk [no-hysteresis]=walk [sticky-pick]=walk
     [outdoor-wins]=scene [no-hysteresis-indoor]=scene [inverted-portal-side]=scene [no-visibility-filter]=scene
     [no-reframe]=scene [stale-scene-array]=scene [ace-hint-key]=scene [keep-current-on-miss]=scene [no-exit-transit]=scene
+    [ace-same-block-guard]=parts [ace-every-part-anchors]=parts
 )
 minutes=${MINUTES:-5}
 faults=("$@")
 ((${#faults[@]} > 0)) || faults=(trunc-floor nan-as-zero map-edge-2040 sign-extend-by drop-block-length no-eps-snap inbound-x-only
     clamp-106 in-cell-neighbours else-diagonal sphere-guard-inverted sphere-leak no-reset no-hysteresis sticky-pick
     outdoor-wins no-hysteresis-indoor inverted-portal-side no-visibility-filter no-reframe stale-scene-array ace-hint-key
-    keep-current-on-miss no-exit-transit)
+    keep-current-on-miss no-exit-transit ace-same-block-guard ace-every-part-anchors)
 out=$root/.fuzz/first-crash
 mkdir -p "$out"
 echo "| fault | target | seeds failing | median afl time | median execs | runs (afl time s @ execs) | regressions (invariant × files) | replay reproduces |"

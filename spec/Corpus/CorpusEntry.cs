@@ -35,11 +35,14 @@ public sealed record CorpusEntry
     /// <summary>Gets the scene walk, for kind <c>scene-walk</c>.</summary>
     public SceneWalk? SceneWalk { get; init; }
 
-    /// <summary>Gets the kind: <c>land</c>, <c>walk</c> or <c>scene-walk</c>.</summary>
-    public string Kind => SceneWalk is not null ? "scene-walk" : Walk is null ? "land" : "walk";
+    /// <summary>Gets the parts query, for kind <c>parts</c>.</summary>
+    public PartsCase? Parts { get; init; }
+
+    /// <summary>Gets the kind: <c>land</c>, <c>walk</c>, <c>scene-walk</c> or <c>parts</c>.</summary>
+    public string Kind => Parts is not null ? "parts" : SceneWalk is not null ? "scene-walk" : Walk is null ? "land" : "walk";
 
     /// <summary>Wraps a failing case of any supported type as an entry, or returns null for an unsupported type.</summary>
-    /// <param name="c">A LandCase, Walk, SceneWalk or OutdoorCase (stored as a walk with no steps).</param>
+    /// <param name="c">A LandCase, Walk, SceneWalk, PartsCase or OutdoorCase (stored as a walk with no steps).</param>
     /// <param name="title">Title.</param>
     /// <param name="invariant">Invariant ID.</param>
     /// <param name="foundBy">What found it.</param>
@@ -50,6 +53,7 @@ public sealed record CorpusEntry
         LandCase land => new CorpusEntry { Title = title, Invariant = invariant, FoundBy = foundBy, Seed = seed, Case = land },
         Walk walk => new CorpusEntry { Title = title, Invariant = invariant, FoundBy = foundBy, Seed = seed, Walk = walk },
         SceneWalk sw => new CorpusEntry { Title = title, Invariant = invariant, FoundBy = foundBy, Seed = seed, SceneWalk = sw },
+        PartsCase parts => new CorpusEntry { Title = title, Invariant = invariant, FoundBy = foundBy, Seed = seed, Parts = parts },
         OutdoorCase q => new CorpusEntry
         {
             Title = title,

@@ -49,7 +49,11 @@ public static class CorpusJson
             }
 
             w.WriteEndArray();
-            if (entry.SceneWalk is { } sw)
+            if (entry.Parts is { } parts)
+            {
+                PartsJson.Write(w, parts);
+            }
+            else if (entry.SceneWalk is { } sw)
             {
                 w.WritePropertyName("scene");
                 Scenes.SceneJson.WriteValue(w, sw.Scene);
@@ -104,7 +108,7 @@ public static class CorpusJson
             var version = Prop(root, "version", source);
             Require(version.ValueKind == JsonValueKind.Number && version.TryGetInt32(out int v) && v == CorpusEntry.CurrentVersion, source, "$.version", $"expected {CorpusEntry.CurrentVersion}");
             string kind = Str(root, "kind", source);
-            Require(kind is "land" or "walk" or "scene-walk", source, "$.kind", "expected \"land\" or \"walk\" (or \"scene-walk\")");
+            Require(kind is "land" or "walk" or "scene-walk" or "parts", source, "$.kind", "expected \"land\" or \"walk\" (or \"scene-walk\", \"parts\")");
             string title = Str(root, "title", source);
             string foundBy = Str(root, "foundBy", source);
             Require(foundBy is "hand" or "props" or "fuzz" or "spec" or "diff", source, "$.foundBy", "expected hand, props, fuzz, spec or diff");
@@ -137,6 +141,11 @@ public static class CorpusJson
                 }
 
                 return header with { SceneWalk = new SceneWalk(scene, WalkJson.Read(Prop(root, "walk", source), source)) };
+            }
+
+            if (kind == "parts")
+            {
+                return header with { Parts = PartsJson.Read(Prop(root, "parts", source), source) };
             }
 
             if (kind == "walk")

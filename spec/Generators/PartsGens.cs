@@ -30,10 +30,13 @@ public static class PartsGens
     public static Gen<PartsCase> Cases { get; } =
         Gen.Zip(OutdoorGens.Cells, Gen.Choose(1, 4)).SelectMany(t => Gen.ArrayOf(PartsIn(t.Item1), t.Item2).Select(p => new PartsCase(p)));
 
-    /// <summary>Gets the arbitrary: drop parts, then simplify the anchor's origin.</summary>
+    /// <summary>Gets the arbitrary: drop parts, then simplify each part's rotation, origin, box and radius.</summary>
     public static Arbitrary<PartsCase> Arbitrary { get; } = Arb.From(Cases, Shrink);
 
-    private static IEnumerable<PartsCase> Shrink(PartsCase c)
+    /// <summary>Returns simpler queries: each part but the anchor dropped, then per part no rotation, simpler x, y, box corners and radius.</summary>
+    /// <param name="c">The query.</param>
+    /// <returns>Candidates.</returns>
+    public static IEnumerable<PartsCase> Shrink(PartsCase c)
     {
         for (int i = c.Parts.Count - 1; i >= 1; i--)
         {
@@ -57,8 +60,42 @@ public static class PartsGens
             {
                 yield return With(c, i, p with { Frame = p.Frame with { Origin = p.Frame.Origin with { Y = y } } });
             }
+
+            foreach (var box in SimplerBoxes(p.Bounds))
+            {
+                yield return With(c, i, p with { Bounds = box });
+            }
+
+            foreach (var r in Snap.Simpler(p.Radius).Where(r => r >= 0))
+            {
+                yield return With(c, i, p with { Radius = r });
+            }
         }
     }
+
+    // Each box corner component made simpler while min ≤ max holds (z first: it only matters through a rotation).
+    private static IEnumerable<Box> SimplerBoxes(Box b)
+    {
+        for (int axis = 2; axis >= 0; axis--)
+        {
+            foreach (var v in Snap.Simpler(b.Min[axis]).Where(v => v <= b.Max[axis]))
+            {
+                yield return b with { Min = WithComponent(b.Min, axis, v) };
+            }
+
+            foreach (var v in Snap.Simpler(b.Max[axis]).Where(v => v >= b.Min[axis]))
+            {
+                yield return b with { Max = WithComponent(b.Max, axis, v) };
+            }
+        }
+    }
+
+    private static Vector3 WithComponent(Vector3 v, int axis, float value) => axis switch
+    {
+        0 => v with { X = value },
+        1 => v with { Y = value },
+        _ => v with { Z = value },
+    };
 
     private static PartsCase With(PartsCase c, int i, Part p)
     {

@@ -77,7 +77,24 @@ public static class InvariantCatalogue
     /// <param name="entry">The entry.</param>
     /// <returns>The first violation, or null.</returns>
     public static Violation? CheckEntry(ICellPhysics impl, CorpusEntry entry) =>
-        entry.SceneWalk is { } sw ? CheckSceneWalk(impl, sw) : entry.Walk is { } walk ? CheckWalk(impl, walk) : CheckLandCase(impl, entry.Case!.Value);
+        entry.Parts is { } parts ? CheckParts(impl, parts) : entry.SceneWalk is { } sw ? CheckSceneWalk(impl, sw) : entry.Walk is { } walk ? CheckWalk(impl, walk) : CheckLandCase(impl, entry.Case!.Value);
+
+    /// <summary>Checks a parts query against every testable parts invariant (PARTS-COVERAGE, PARTS-SOUNDNESS).</summary>
+    /// <param name="impl">The implementation under test.</param>
+    /// <param name="c">The query.</param>
+    /// <returns>The first violation in catalogue order, or null.</returns>
+    public static Violation? CheckParts(ICellPhysics impl, PartsCase c)
+    {
+        foreach (var invariant in PartsInvariants.All)
+        {
+            if (invariant.IsTestable(impl) && invariant.Check(impl, c) is { IsViolation: true } o)
+            {
+                return new Violation(invariant.Id, o.Message ?? "violated", c.ToString()) { Case = c };
+            }
+        }
+
+        return null;
+    }
 
     /// <summary>Checks a scene walk against every testable scene invariant.</summary>
     /// <param name="impl">The implementation under test.</param>
