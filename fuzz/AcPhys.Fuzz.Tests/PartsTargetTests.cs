@@ -31,17 +31,7 @@ public sealed class PartsTargetTests
     {
         // PARTS-COVERAGE, PARTS-SOUNDNESS: random, empty, all-ones and a megabyte decode without an exception to 1–4
         // finite parts, and break no parts invariant on the reference.
-        var random = new Random(17);
-        var inputs = new List<byte[]> { Array.Empty<byte>(), new byte[PartsCodec.Length], Enumerable.Repeat((byte)0xFF, PartsCodec.Length).ToArray() };
-        var huge = new byte[1 << 20];
-        random.NextBytes(huge);
-        inputs.Add(huge);
-        for (int i = 0; i < 400; i++)
-        {
-            var input = new byte[random.Next(0, 2 * PartsCodec.Length)];
-            random.NextBytes(input);
-            inputs.Add(input);
-        }
+        var inputs = CodecInputs.Edges(PartsCodec.Length, 400, seed: 17);
 
         foreach (var input in inputs)
         {

@@ -25,17 +25,7 @@ public sealed class SceneTargetTests
     {
         // Every input reaches the physics: random, empty, all-ones and a megabyte decode without an exception, stay
         // bounded, and break no indoor invariant on the reference.
-        var random = new Random(11);
-        var inputs = new List<byte[]> { Array.Empty<byte>(), new byte[SceneCodec.Length], Enumerable.Repeat((byte)0xFF, SceneCodec.Length).ToArray() };
-        var huge = new byte[1 << 20];
-        random.NextBytes(huge);
-        inputs.Add(huge);
-        for (int i = 0; i < 150; i++)
-        {
-            var input = new byte[random.Next(0, 2 * SceneCodec.Length)];
-            random.NextBytes(input);
-            inputs.Add(input);
-        }
+        var inputs = CodecInputs.Edges(SceneCodec.Length, 150, seed: 11);
 
         foreach (var input in inputs)
         {
