@@ -79,7 +79,7 @@ public sealed class PartsTargetTests
     {
         // Seeds that already fail would make a find the seeds' doing, not the fuzzer's. The files correct-core
         // campaigns add to corpus/fuzz/parts (coverage growth) need only hold on the correct core.
-        string folder = Path.Combine(Root, "corpus", "fuzz", "parts");
+        string folder = Path.Combine(RepoPaths.Root, "corpus", "fuzz", "parts");
         var handMade = Target.Seeds.Values.Concat(HandMadeSeeds.Select(n => File.ReadAllBytes(Path.Combine(folder, n)))).ToList();
         foreach (var seed in handMade)
         {
@@ -138,21 +138,5 @@ public sealed class PartsTargetTests
 
         var e = Assert.Throws<CorpusFormatException>(() => CorpusJson.Read(json, "p.json"));
         Assert.Contains(error, e.Message, StringComparison.Ordinal);
-    }
-
-    private static string Root
-    {
-        get
-        {
-            for (var dir = new DirectoryInfo(AppContext.BaseDirectory); dir is not null; dir = dir.Parent)
-            {
-                if (File.Exists(Path.Combine(dir.FullName, "AcPhysVerify.sln")))
-                {
-                    return dir.FullName;
-                }
-            }
-
-            throw new InvalidOperationException("AcPhysVerify.sln not found above " + AppContext.BaseDirectory);
-        }
     }
 }

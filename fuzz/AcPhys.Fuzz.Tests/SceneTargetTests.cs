@@ -91,8 +91,8 @@ public sealed class SceneTargetTests
     {
         foreach (var (seed, file) in CottageSeeds)
         {
-            var stored = CorpusJson.ReadFile(Path.Combine(Root, "corpus", "seeds", file));
-            var decoded = Target.Decode(File.ReadAllBytes(Path.Combine(Root, "corpus", "fuzz", "scene", seed)));
+            var stored = CorpusJson.ReadFile(Path.Combine(RepoPaths.Root, "corpus", "seeds", file));
+            var decoded = Target.Decode(File.ReadAllBytes(Path.Combine(RepoPaths.Root, "corpus", "fuzz", "scene", seed)));
 
             Assert.Equal(CorpusJson.Write(stored), CorpusJson.Write(stored with { SceneWalk = decoded with { Recipe = null } }));
         }
@@ -105,7 +105,7 @@ public sealed class SceneTargetTests
     {
         // The through-walk of corpus/seeds exposes these faults; the test throws the typed violation with the ID
         // the catalogue reports first, one of the invariants the fault is documented to break.
-        byte[] input = File.ReadAllBytes(Path.Combine(Root, "corpus", "fuzz", "scene", CottageSeeds[0].Seed));
+        byte[] input = File.ReadAllBytes(Path.Combine(RepoPaths.Root, "corpus", "fuzz", "scene", CottageSeeds[0].Seed));
         var expected = InvariantCatalogue.CheckSceneWalk(PlantedFaults.Create(fault), Target.Decode(input));
         Assert.NotNull(expected);
         Assert.Contains(expected.InvariantId, PlantedFaults.Find(fault)!.CaughtBy);
@@ -121,7 +121,7 @@ public sealed class SceneTargetTests
     public void A_scene_crash_is_shrunk_to_a_scene_walk_regression_that_replays()
     {
         const string fault = "no-exit-transit";
-        byte[] input = File.ReadAllBytes(Path.Combine(Root, "corpus", "fuzz", "scene", CottageSeeds[0].Seed));
+        byte[] input = File.ReadAllBytes(Path.Combine(RepoPaths.Root, "corpus", "fuzz", "scene", CottageSeeds[0].Seed));
         var finding = Target.Classify(input, fault)!;
         var original = (SceneWalk)finding.Case!;
 
@@ -138,21 +138,5 @@ public sealed class SceneTargetTests
         Assert.Null(InvariantCatalogue.CheckEntry(ReferenceAdapter.Instance, read));
         Assert.True(read.SceneWalk!.Walk.Steps.Count < original.Walk.Steps.Count, $"not shrunk: {read.SceneWalk.Size} vs {original.Size}");
         Assert.Equal(FailureFile.NameFor(entry), FailureFile.NameFor(Target.Minimise(finding, fault, "again")!)); // same file
-    }
-
-    private static string Root
-    {
-        get
-        {
-            for (var dir = new DirectoryInfo(AppContext.BaseDirectory); dir is not null; dir = dir.Parent)
-            {
-                if (File.Exists(Path.Combine(dir.FullName, "AcPhysVerify.sln")))
-                {
-                    return dir.FullName;
-                }
-            }
-
-            throw new InvalidOperationException("AcPhysVerify.sln not found above " + AppContext.BaseDirectory);
-        }
     }
 }
