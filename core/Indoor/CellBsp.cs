@@ -51,14 +51,10 @@ public sealed class CellBsp : ICellVolume
         }
 
         Bounds = new Box(min, max);
-        ChainPlanes = pieces[0].Planes;
     }
 
     /// <inheritdoc/>
     public Box Bounds { get; }
-
-    /// <summary>Gets the planes of the positive chain, root first (what retail's queries see).</summary>
-    public IReadOnlyList<CellPlane> ChainPlanes { get; }
 
     /// <summary>Gets the number of nodes including leaves (the whole tree, negative subtrees included).</summary>
     public int NodeCount => nodes.Length;
@@ -147,14 +143,11 @@ public sealed class CellBsp : ICellVolume
             return BoundingType.Outside;
         }
 
+        // Retail also handles a plane node without a positive child; every chain built here ends in a leaf, so a
+        // plane node always has one.
         if (d >= r)
         {
-            return node.Positive >= 0 ? SphereAt(node.Positive, c, r) : BoundingType.EntirelyInside;
-        }
-
-        if (node.Positive < 0)
-        {
-            return BoundingType.PartiallyInside;
+            return SphereAt(node.Positive, c, r);
         }
 
         return SphereAt(node.Positive, c, r) != BoundingType.Outside ? BoundingType.PartiallyInside : BoundingType.Outside;

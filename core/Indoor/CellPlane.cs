@@ -21,9 +21,6 @@ public enum Side
 /// <threadsafety>Immutable value type.</threadsafety>
 public readonly record struct CellPlane(Vector3 Normal, float D)
 {
-    /// <summary>Gets a value indicating whether this is the all-zero plane a physics BSP leaf carries (facts §5.7).</summary>
-    public bool IsZero => Normal == Vector3.Zero && D == 0f;
-
     /// <summary>Gets a value indicating whether the plane is usable: finite and with a non-zero normal.</summary>
     public bool IsValid => float.IsFinite(Normal.X) && float.IsFinite(Normal.Y) && float.IsFinite(Normal.Z) && float.IsFinite(D) && Normal.LengthSquared() > 1e-12f;
 
@@ -51,8 +48,4 @@ public readonly record struct CellPlane(Vector3 Normal, float D)
         float d = Distance(p) + bias;
         return d > LandDefs.Epsilon ? Side.Front : d < -LandDefs.Epsilon ? Side.Behind : Side.Close;
     }
-
-    /// <summary>Returns the same plane with the normal reversed (the other half-space).</summary>
-    /// <returns>The flipped plane.</returns>
-    public CellPlane Flipped() => new(-Normal, -D);
 }

@@ -53,9 +53,6 @@ public sealed class CellScene : IScene
     /// <summary>Gets the buildings discarded because their origin lies in another block.</summary>
     public IReadOnlyList<Building> Discarded { get; }
 
-    /// <summary>Gets the env cells.</summary>
-    public IReadOnlyCollection<EnvCell> EnvCells => cells.Values;
-
     /// <summary>Gets the attached buildings by owning land cell.</summary>
     public IReadOnlyDictionary<CellId, Building> Buildings => buildings;
 

@@ -57,9 +57,6 @@ public sealed class ConvexPiece
     /// <summary>Gets the axis-aligned bounds of the vertices.</summary>
     public Box Bounds { get; }
 
-    /// <summary>Gets a value indicating whether the piece is an axis-aligned box (6 axis planes).</summary>
-    public bool IsAxisBox => planes.Length == 6 && planes.All(p => MathF.Abs(p.Normal.X) + MathF.Abs(p.Normal.Y) + MathF.Abs(p.Normal.Z) == 1f);
-
     /// <summary>Returns the axis-aligned box min..max as a piece.</summary>
     /// <param name="min">Minimum corner.</param>
     /// <param name="max">Maximum corner (each coordinate &gt; min's).</param>

@@ -41,9 +41,6 @@ public sealed class EnvCell
     /// <summary>Gets the portals, in dat order.</summary>
     public ReadOnlySpan<CellPortal> Portals => portals;
 
-    /// <summary>Gets the visible cells.</summary>
-    public ReadOnlySpan<CellId> VisibleCells => visible;
-
     /// <summary>Tests whether a cell is in this cell's VisibleCells.</summary>
     /// <param name="id">A full id.</param>
     /// <returns>True when listed.</returns>
