@@ -339,11 +339,12 @@ public static class IndoorInvariants
         {
             bool applied = false;
             var trace = SceneWalkRunner.Run(impl, w);
-            var offTrack = OffTrack(w, trace);
+            var reasons = trace.Select(s => NoAnswerReason(w, s)).ToArray();
+            var offTrack = OffTrack(trace, i => reasons[i]);
             for (int i = 0; i < trace.Count; i++)
             {
                 var s = trace[i];
-                if (offTrack[i] || NoAnswerReason(w, s) is not null)
+                if (offTrack[i] || reasons[i] is not null)
                 {
                     continue;
                 }
@@ -461,14 +462,10 @@ public static class IndoorInvariants
                 return false; // a reachable cell holds the centre (within the 1 mm tie band either answer is allowed)
             }
 
-            var frame = new Frame(cell.Origin, cell.Rotation);
-            var bounds = cell.Pieces[0].ToConvex().Bounds;
-            var middle = (bounds.Min + bounds.Max) / 2;
-            foreach (var portal in cell.Portals)
+            foreach (var outward in Outward(cell))
             {
-                var plane = new CellPlane(Vector3.Normalize(portal.Plane.Normal), portal.Plane.D / portal.Plane.Normal.Length());
-                double side = Math.Sign(plane.Distance(middle));
-                bool reached = s.Query.Spheres.Any(sphere => (-side * plane.Distance(frame.GlobalToLocal(sphere.Center))) + sphere.Radius + LandDefs.Epsilon > -Margin);
+                var portal = outward.Portal;
+                bool reached = s.Query.Spheres.Any(sphere => outward.Past(sphere.Center) + sphere.Radius + LandDefs.Epsilon > -Margin);
                 if (!reached)
                 {
                     continue;
@@ -493,7 +490,9 @@ public static class IndoorInvariants
     // Steps queried while the client still holds a cell it lost for a documented reason (a no-answer NEVER-NULL
     // excuses): retail's transition fails on a null cell and walls stop the body, so from there until a query answers
     // again the walk is not a trajectory retail could produce, and statements about absorbing states do not apply.
-    private static bool[] OffTrack(SceneWalk w, IReadOnlyList<WalkStep> trace)
+    private static bool[] OffTrack(SceneWalk w, IReadOnlyList<WalkStep> trace) => OffTrack(trace, i => NoAnswerReason(w, trace[i]));
+
+    private static bool[] OffTrack(IReadOnlyList<WalkStep> trace, Func<int, string?> noAnswerReason)
     {
         var off = new bool[trace.Count];
         bool stale = false;
@@ -504,7 +503,7 @@ public static class IndoorInvariants
             {
                 stale = false;
             }
-            else if (NoAnswerReason(w, trace[i]) is not null)
+            else if (noAnswerReason(i) is not null)
             {
                 stale = true;
             }
@@ -584,24 +583,18 @@ public static class IndoorInvariants
             return null;
         }
 
-        var frame = new Frame(cell.Origin, cell.Rotation);
-        var bounds = cell.Pieces[0].ToConvex().Bounds;
-        var middle = (bounds.Min + bounds.Max) / 2;
-        foreach (var portal in cell.Portals)
+        foreach (var outward in Outward(cell))
         {
-            var other = cell.Id.WithLow(portal.Other);
-            if (portal.IsExit || !w.Scene.UnloadedCells.Contains(other))
+            var other = cell.Id.WithLow(outward.Portal.Other);
+            if (outward.Portal.IsExit || !w.Scene.UnloadedCells.Contains(other))
             {
                 continue;
             }
 
-            var plane = new CellPlane(Vector3.Normalize(portal.Plane.Normal), portal.Plane.D / portal.Plane.Normal.Length());
-            double own = Math.Sign(plane.Distance(middle));
             bool reaches = false, tie = false;
             foreach (var sphere in s.Query.Spheres)
             {
-                double toward = -own * plane.Distance(frame.GlobalToLocal(sphere.Center));
-                double slack = toward + sphere.Radius + LandDefs.Epsilon;
+                double slack = outward.Past(sphere.Center) + sphere.Radius + LandDefs.Epsilon;
                 tie |= Math.Abs(slack) < Margin;
                 reaches |= slack > 0;
             }
@@ -615,5 +608,25 @@ public static class IndoorInvariants
         }
 
         return null;
+    }
+
+    // A cell's portals with their planes normalised and the cell's own side read from the geometry (piece 0's box
+    // centre), not from PortalSide, so a fault in PortalSide cannot hide itself from the invariants that use this.
+    private static IEnumerable<OutwardPortal> Outward(SceneCell cell)
+    {
+        var frame = new Frame(cell.Origin, cell.Rotation);
+        var bounds = cell.Pieces[0].ToConvex().Bounds;
+        var middle = (bounds.Min + bounds.Max) / 2;
+        foreach (var portal in cell.Portals)
+        {
+            var plane = new CellPlane(Vector3.Normalize(portal.Plane.Normal), portal.Plane.D / portal.Plane.Normal.Length());
+            yield return new OutwardPortal(portal, plane, Math.Sign(plane.Distance(middle)), frame);
+        }
+    }
+
+    private readonly record struct OutwardPortal(ScenePortal Portal, CellPlane Plane, double OwnSide, Frame Frame)
+    {
+        // How far a global point lies past the portal's plane, away from the cell (negative: on the cell's side).
+        public double Past(Vector3 global) => -OwnSide * Plane.Distance(Frame.GlobalToLocal(global));
     }
 }
