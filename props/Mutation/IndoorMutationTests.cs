@@ -36,6 +36,19 @@ public sealed class IndoorMutationTests
         Assert.True(cut.Contains(new Vector3(0.5f, 0.5f, 0.5f)));
     }
 
+    [Fact(DisplayName = "facts §5.7: a piece normalises its planes: scaling a plane's (N, D) by k > 0 leaves the planes, corners, bounds and containment unchanged")]
+    public void ConvexPiece_NormalisesItsPlanes() =>
+        Check.One(FixedSeed.Config(0x1D00_0003), Prop.ForAll(ScaledPieces.ToArbitrary(), t =>
+        {
+            var (unit, scales, probe) = t;
+            var scaled = new ConvexPiece(unit.Select((p, i) => new CellPlane(p.Normal * scales[i], p.D * scales[i])).ToArray());
+            var reference = new ConvexPiece(unit);
+            bool planes = scaled.Planes.Zip(unit).All(z => Vector3.Distance(z.First.Normal, z.Second.Normal) < 1e-5f && MathF.Abs(z.First.D - z.Second.D) < 1e-4f);
+            bool bounds = Vector3.Distance(scaled.Bounds.Min, reference.Bounds.Min) < 1e-3f && Vector3.Distance(scaled.Bounds.Max, reference.Bounds.Max) < 1e-3f;
+            bool inside = reference.Contains(probe);
+            return (planes && bounds && scaled.Vertices.Count == reference.Vertices.Count && scaled.Contains(probe) == inside).Classify(inside, "probe inside");
+        }));
+
     [Fact(DisplayName = "facts §5.7: a cell volume (BSP or AABB) needs at least one piece; an env cell needs an env cell id")]
     public void CellVolumes_RejectNoPieces()
     {
@@ -157,6 +170,20 @@ public sealed class IndoorMutationTests
         var edge = Gen.Elements(bMin - tol, bMax + tol, bMin, bMax, bMin - tol - 0.005f, bMax + tol + 0.005f, bMin - 3, bMax + 3);
         return Gen.Zip(edge, edge).Select(p => p.Item1 <= p.Item2 ? (p.Item1, p.Item2) : (p.Item2, p.Item1));
     }
+
+    // Unit-normal boxes (some cut by a slanted plane), a positive scale per plane, and a probe point well clear of
+    // every plane (so containment does not hinge on rounding).
+    private static Gen<(CellPlane[] Unit, float[] Scales, Vector3 Probe)> ScaledPieces { get; } =
+        from lo in Gen.Choose(-10, 10).Three()
+        from size in Gen.Choose(2, 8).Three()
+        from cut in Gen.Elements(false, true)
+        from scales in Gen.Elements(0.25f, 1f, 2f, 3.7f, 40f).ArrayOf(7)
+        from probe in Gen.Choose(-4, 16).Select(i => (i * 0.5f) + 0.3f).Three()
+        let min = new Vector3(lo.Item1, lo.Item2, lo.Item3)
+        let max = min + new Vector3(size.Item1, size.Item2, size.Item3)
+        let box = ConvexPiece.FromBox(min, max).Planes
+        let slant = CellPlane.Through(new Vector3(-1, -1, 0), max - new Vector3(0.5f, 0.5f, 0))
+        select ((cut ? box.Append(slant) : box).ToArray(), scales, min + new Vector3(probe.Item1, probe.Item2, probe.Item3));
 
     private static Gen<float> Near(float onPlane) => Gen.Frequency(
         (3, Gen.Elements(0f, 0.0001f, -0.0001f, 0.0002f, -0.0002f, 0.0003f, -0.0003f, -0.0004f, -1f, 1f, -2f).Select(d => onPlane + d)),
