@@ -5,7 +5,13 @@ namespace AcPhys.Core;
 /// <summary>An axis-aligned box, metres.</summary>
 /// <param name="Min">The minimum corner.</param>
 /// <param name="Max">The maximum corner.</param>
-public readonly record struct Box(Vector3 Min, Vector3 Max);
+public readonly record struct Box(Vector3 Min, Vector3 Max)
+{
+    /// <summary>Returns corner <paramref name="c"/> of 8: bit 0 picks Max.X, bit 1 Max.Y, bit 2 Max.Z (else Min).</summary>
+    /// <param name="c">The corner index, 0 to 7.</param>
+    /// <returns>The corner.</returns>
+    public Vector3 Corner(int c) => new((c & 1) == 0 ? Min.X : Max.X, (c & 2) == 0 ? Min.Y : Max.Y, (c & 4) == 0 ? Min.Z : Max.Z);
+}
 
 /// <summary>
 /// One physics part of an object, for the parts / bounding-box variant of add_all_outside_cells (facts §3.4): where it

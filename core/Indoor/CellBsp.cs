@@ -104,7 +104,7 @@ public sealed class CellBsp : ICellVolume
     {
         for (int c = 0; c < 8; c++)
         {
-            var corner = new Vector3((c & 1) == 0 ? b.Min.X : b.Max.X, (c & 2) == 0 ? b.Min.Y : b.Max.Y, (c & 4) == 0 ? b.Min.Z : b.Max.Z);
+            var corner = b.Corner(c);
             if (plane.Classify(corner) != Side.Behind)
             {
                 return false;

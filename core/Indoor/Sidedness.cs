@@ -39,7 +39,7 @@ public static class BoxSide
         var provisional = d > LandDefs.Epsilon ? Sidedness.Positive : Sidedness.Negative;
         for (int c = 0; c < 8; c++)
         {
-            var corner = new Vector3((c & 1) == 0 ? box.Min.X : box.Max.X, (c & 2) == 0 ? box.Min.Y : box.Max.Y, (c & 4) == 0 ? box.Min.Z : box.Max.Z);
+            var corner = box.Corner(c);
             var side = plane.Classify(corner, LandDefs.Epsilon) switch
             {
                 Side.Front => Sidedness.Positive,
@@ -68,7 +68,7 @@ public static class BoxSide
         var b = part.Bounds;
         for (int c = 0; c < 8; c++)
         {
-            var corner = new Vector3((c & 1) == 0 ? b.Min.X : b.Max.X, (c & 2) == 0 ? b.Min.Y : b.Max.Y, (c & 4) == 0 ? b.Min.Z : b.Max.Z);
+            var corner = b.Corner(c);
             var p = targetFrame.GlobalToLocal(part.Frame.LocalToGlobal(corner) + offset);
             min = Vector3.Min(min, p);
             max = Vector3.Max(max, p);

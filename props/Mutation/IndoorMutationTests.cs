@@ -98,7 +98,7 @@ public sealed class IndoorMutationTests
             var (plane, box) = t;
             const float eps = LandDefs.Epsilon;
             float dMin = plane.Distance(box.Min);
-            var corners = Corners(box).Select(c => plane.Distance(c) + eps).ToArray();
+            var corners = Enumerable.Range(0, 8).Select(box.Corner).Select(c => plane.Distance(c) + eps).ToArray();
             var expected = dMin >= -eps && dMin <= eps ? Sidedness.Crossing
                 : dMin > eps && corners.All(d => d > eps) ? Sidedness.Positive
                 : dMin < -eps && corners.All(d => d < -eps) ? Sidedness.Negative
@@ -188,14 +188,6 @@ public sealed class IndoorMutationTests
     private static Gen<float> Near(float onPlane) => Gen.Frequency(
         (3, Gen.Elements(0f, 0.0001f, -0.0001f, 0.0002f, -0.0002f, 0.0003f, -0.0003f, -0.0004f, -1f, 1f, -2f).Select(d => onPlane + d)),
         (1, Gen.Choose(-300, 300).Select(i => i * 0.01f)));
-
-    private static IEnumerable<Vector3> Corners(Box b)
-    {
-        for (int c = 0; c < 8; c++)
-        {
-            yield return new Vector3((c & 1) == 0 ? b.Min.X : b.Max.X, (c & 2) == 0 ? b.Min.Y : b.Max.Y, (c & 4) == 0 ? b.Min.Z : b.Max.Z);
-        }
-    }
 
     private static string Rejects(CellPlane[] planes) => Assert.Throws<ArgumentException>(() => new ConvexPiece(planes)).Message;
 
