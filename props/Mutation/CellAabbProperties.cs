@@ -46,16 +46,17 @@ public sealed class CellAabbProperties
             return (new CellAabb(bounds).SphereIntersects(sphere) == expected).Collect(expected).Classify(touching, "touching at exactly R");
         }));
 
-    [Fact(DisplayName = "seed point_in_cell (ACME): the AABB volume of several pieces is the per-axis min and max over every piece's bounds, whichever piece holds them")]
+    [Fact(DisplayName = "facts §5.7, seed point_in_cell (ACME): the bounds of a cell volume (AABB or BSP) of several pieces are the per-axis min and max over every piece's bounds, whichever piece holds them")]
     public void Bounds_AreTheUnionOfThePieces() =>
         Check.One(FixedSeed.Config(0x1D00_0012), Prop.ForAll(PieceBoxes.ToArbitrary(), boxes =>
         {
             var pieces = boxes.Select(b => ConvexPiece.FromBox(b.Min, b.Max)).ToArray();
             var min = pieces.Select(p => p.Bounds.Min).Aggregate(Vector3.Min);
             var max = pieces.Select(p => p.Bounds.Max).Aggregate(Vector3.Max);
-            var bounds = new CellAabb(pieces).Bounds;
+            var aabb = new CellAabb(pieces).Bounds;
+            var bsp = new CellBsp(pieces).Bounds;
             bool firstHoldsAll = pieces[0].Bounds.Min == min && pieces[0].Bounds.Max == max;
-            return (bounds.Min == min && bounds.Max == max).Collect($"{pieces.Length} pieces").Classify(!firstHoldsAll, "an extreme outside piece 0");
+            return (aabb.Min == min && aabb.Max == max && bsp.Min == min && bsp.Max == max).Collect($"{pieces.Length} pieces").Classify(!firstHoldsAll, "an extreme outside piece 0");
         }));
 
     // Boxes on a half-metre grid, flat ones included where no piece is built from them.
