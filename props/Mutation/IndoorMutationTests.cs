@@ -36,6 +36,37 @@ public sealed class IndoorMutationTests
         Assert.True(cut.Contains(new Vector3(0.5f, 0.5f, 0.5f)));
     }
 
+    [Fact(DisplayName = "facts §5.7: a plane is usable iff its normal's three components and D are finite and |N|² > 1e-12 (an infinite component on any one axis is refused)")]
+    public void CellPlane_IsValidNeedsEveryComponentFiniteAndANonZeroNormal()
+    {
+        foreach (int axis in new[] { 0, 1, 2 })
+        {
+            var n = Vector3.UnitX;
+            n[axis] = float.PositiveInfinity;
+            Assert.False(new CellPlane(n, 0).IsValid, $"infinite normal component {axis}");
+            n[axis] = float.NaN;
+            Assert.False(new CellPlane(n, 0).IsValid, $"NaN normal component {axis}");
+        }
+
+        Assert.False(new CellPlane(Vector3.UnitZ, float.NegativeInfinity).IsValid);
+
+        // The smallest usable normal: |N|² one step above 1e-12 is valid, exactly 1e-12 is not.
+        float x = MathF.Sqrt(1e-12f);
+        while (x * x > 1e-12f)
+        {
+            x = MathF.BitDecrement(x);
+        }
+
+        while (x * x < 1e-12f)
+        {
+            x = MathF.BitIncrement(x);
+        }
+
+        Assert.Equal(1e-12f, x * x);
+        Assert.False(new CellPlane(new Vector3(x, 0, 0), 0).IsValid);
+        Assert.True(new CellPlane(new Vector3(MathF.BitIncrement(x), 0, 0), 0).IsValid);
+    }
+
     [Fact(DisplayName = "facts §5.7: a piece normalises its planes: scaling a plane's (N, D) by k > 0 leaves the planes, corners, bounds and containment unchanged")]
     public void ConvexPiece_NormalisesItsPlanes() =>
         Check.One(FixedSeed.Config(0x1D00_0003), Prop.ForAll(ScaledPieces.ToArbitrary(), t =>
