@@ -14,7 +14,7 @@ public sealed class CellAabb(Box bounds) : ICellVolume
     /// <summary>Initializes a new instance from pieces.</summary>
     /// <param name="pieces">At least one piece.</param>
     public CellAabb(IReadOnlyList<ConvexPiece> pieces)
-        : this(Union(pieces))
+        : this(ConvexPiece.BoundsOf(pieces))
     {
     }
 
@@ -48,22 +48,4 @@ public sealed class CellAabb(Box bounds) : ICellVolume
         box.Min.X <= Bounds.Max.X + Tolerance && box.Max.X >= Bounds.Min.X - Tolerance
         && box.Min.Y <= Bounds.Max.Y + Tolerance && box.Max.Y >= Bounds.Min.Y - Tolerance
         && box.Min.Z <= Bounds.Max.Z + Tolerance && box.Max.Z >= Bounds.Min.Z - Tolerance;
-
-    private static Box Union(IReadOnlyList<ConvexPiece> pieces)
-    {
-        if (pieces.Count == 0)
-        {
-            throw new ArgumentException("a cell needs at least one piece", nameof(pieces));
-        }
-
-        var min = pieces[0].Bounds.Min;
-        var max = pieces[0].Bounds.Max;
-        foreach (var p in pieces)
-        {
-            min = Vector3.Min(min, p.Bounds.Min);
-            max = Vector3.Max(max, p.Bounds.Max);
-        }
-
-        return new Box(min, max);
-    }
 }

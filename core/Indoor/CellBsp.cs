@@ -23,10 +23,7 @@ public sealed class CellBsp : ICellVolume
     /// <param name="pieces">At least one convex piece.</param>
     public CellBsp(IReadOnlyList<ConvexPiece> pieces)
     {
-        if (pieces.Count == 0)
-        {
-            throw new ArgumentException("a cell needs at least one piece", nameof(pieces));
-        }
+        Bounds = ConvexPiece.BoundsOf(pieces); // first: it refuses an empty list
 
         var list = new List<Node>();
         int root = Chain(list, pieces[0]);
@@ -42,15 +39,6 @@ public sealed class CellBsp : ICellVolume
         list[root] = list[root] with { Negative = negative };
         nodes = [.. list];
         Root = root;
-        var min = pieces[0].Bounds.Min;
-        var max = pieces[0].Bounds.Max;
-        foreach (var p in pieces)
-        {
-            min = Vector3.Min(min, p.Bounds.Min);
-            max = Vector3.Max(max, p.Bounds.Max);
-        }
-
-        Bounds = new Box(min, max);
     }
 
     /// <inheritdoc/>

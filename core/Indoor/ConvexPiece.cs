@@ -57,6 +57,27 @@ public sealed class ConvexPiece
     /// <summary>Gets the axis-aligned bounds of the vertices.</summary>
     public Box Bounds { get; }
 
+    /// <summary>Returns the box around a cell's pieces: the per-axis min and max of their bounds.</summary>
+    /// <param name="pieces">At least one piece.</param>
+    /// <returns>The box.</returns>
+    public static Box BoundsOf(IReadOnlyList<ConvexPiece> pieces)
+    {
+        if (pieces.Count == 0)
+        {
+            throw new ArgumentException("a cell needs at least one piece", nameof(pieces));
+        }
+
+        var min = pieces[0].Bounds.Min;
+        var max = pieces[0].Bounds.Max;
+        foreach (var p in pieces)
+        {
+            min = Vector3.Min(min, p.Bounds.Min);
+            max = Vector3.Max(max, p.Bounds.Max);
+        }
+
+        return new Box(min, max);
+    }
+
     /// <summary>Returns the axis-aligned box min..max as a piece.</summary>
     /// <param name="min">Minimum corner.</param>
     /// <param name="max">Maximum corner (each coordinate &gt; min's).</param>
