@@ -52,6 +52,11 @@ public sealed class ConvexPiece
     public IReadOnlyList<CellPlane> Planes => planes;
 
     /// <summary>Gets the corner vertices.</summary>
+    /// <remarks>
+    /// Each is the meeting point of three planes whose normals' determinant has |det| ≥ 1e-6 (smaller is parallel),
+    /// kept when it is at most 1e-3 behind every plane (N·v + D ≥ −1e-3, inclusive), and dropped as a repeat when it
+    /// is closer than 1e-4 to an earlier corner (squared distance &lt; 1e-8; exactly 1e-8 is a new corner).
+    /// </remarks>
     public IReadOnlyList<Vector3> Vertices { get; }
 
     /// <summary>Gets the axis-aligned bounds of the vertices.</summary>
