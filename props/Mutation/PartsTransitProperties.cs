@@ -1,8 +1,8 @@
 using System.Numerics;
 using AcPhys.Core;
-using AcPhys.Spec.Scenes;
 using FsCheck;
 using FsCheck.Fluent;
+using static AcPhys.Props.Mutation.CottageProbe;
 
 namespace AcPhys.Props.Mutation;
 
@@ -32,7 +32,7 @@ public sealed class PartsTransitProperties
             var (c, aceBoxSide, pick) = t;
             ushort portalId = pick == -2 ? BldPortal.None : pick == -1 ? (ushort)c.Cell.Portals.Length : (ushort)c.PortalIndex;
             // The first part aims at the building portal's own plane (the others anywhere), so its gate edges are hit.
-            var parts = c.Plans.Select((p, i) => (i == 0 ? p with { Portal = c.PortalIndex } : p).At(c.Cell)).ToArray();
+            var parts = c.Plans.Select((p, i) => (i == 0 ? p with { Probe = p.Probe with { Portal = c.PortalIndex } } : p).At(c.Cell)).ToArray();
             var actual = new CellArray();
             bool entered = EnvTransitParts.CheckBuildingTransit(actual, c.Scene, c.Cell, portalId, parts, c.Fidelity, aceBoxSide);
 
@@ -65,62 +65,23 @@ public sealed class PartsTransitProperties
         }));
 
     private static Gen<Case> Cases { get; } =
-        from blockX in Gen.Choose(1, 250)
-        from blockY in Gen.Choose(1, 250)
-        from at in Gen.Zip(Gen.Choose(30, 150), Gen.Choose(30, 150))
-        from yaw in Gen.Elements(0f, MathF.PI / 2, 0.3f, -1.1f)
-        from rooms in Gen.Choose(1, 4)
-        from size in Gen.Elements(4f, 6f, 9f)
-        from flips in Gen.Choose(0, 15)
-        from backDoor in Gen.Elements(false, true)
-        from storey in Gen.Elements(false, true)
-        let plan = new CottagePlan((blockX * 192.0) + at.Item1, (blockY * 192.0) + at.Item2, yaw, rooms, size, size, flips, backDoor, storey)
-        let full = SceneBuild.Build(SceneKit.Cottage(plan))
-        from room in Gen.Choose(0, rooms - 1)
-        from missing in Gen.Choose(-1, rooms) // a room (or the storey) left out of the scene, or none
-        from parts in Gen.Choose(1, 3).SelectMany(n => PartGen(full.GetEnvCell(plan.RoomId(room))!).ArrayOf(n))
+        from cottage in CottageProbe.Cottages
+        from parts in Gen.Choose(1, 3).SelectMany(n => PartGen(cottage.Cell).ArrayOf(n))
         from portalIndex in Gen.Choose(0, 7)
         from flags in Gen.Choose(0, 7)
-        let cell = full.GetEnvCell(plan.RoomId(room))!
-        let scene = missing < 0 || missing == room ? full : Without(full, plan, rooms, missing)
         let fidelity = new IndoorFidelity(AceNeighbourViaVisibleCells: (flags & 1) != 0, AceLoadHintLowKey: (flags & 2) != 0, AceOutsideByCellId: (flags & 4) != 0)
-        select new Case(scene, cell, parts, fidelity, portalIndex % cell.Portals.Length);
+        select new Case(cottage.Scene, cottage.Cell, parts, fidelity, portalIndex % cottage.Cell.Portals.Length);
 
-    // A part around one of the cell's portal planes: its centre at a signed distance from the plane at, just inside
-    // and just outside the gate's r + EPS (or anywhere in the room), its box from a point to larger than a door, its
-    // frame yawed, and its position framed in the cell's block or in one of the eight around it.
+    // A part around one of the cell's portal planes (CottageProbe.Probes: its centre at, just inside and just outside
+    // the gate's r + EPS, or anywhere in the room), its box from a point to larger than a door, its frame yawed, and its
+    // position framed in the cell's block or in one of the eight around it.
     private static Gen<PartPlan> PartGen(EnvCell cell) =>
-        from portal in Gen.Choose(0, cell.Portals.Length - 1)
-        from radius in Gen.Frequency((1, Gen.Constant(0f)), (4, Gen.Elements(0.25f, 0.5f, 1.5f).Select(ExactGate)))
-        from edge in Gen.Elements(-1, 0, 1, 2)
-        from sign in Gen.Elements(-1f, 1f)
-        from nudge in Gen.Frequency((3, Gen.Constant(0f)), (2, Gen.Elements(-0.001f, 0.001f, -0.5f, 0.5f, 3f)))
-        from along in Gen.Zip(Gen.Choose(-30, 30), Gen.Choose(-30, 30))
+        from probe in CottageProbe.Probes(cell)
         from half in Gen.Elements(0f, 0.05f, 0.2f, 1f, 2.5f)
         from yaw in Gen.Elements(0f, 0.7f, MathF.PI / 2)
         from dx in Gen.Choose(-1, 1)
         from dy in Gen.Choose(-1, 1)
-        select new PartPlan(portal, radius, edge == 2 ? nudge : (sign * (radius + LandDefs.Epsilon) * edge) + nudge, new Vector2(along.Item1 * 0.1f, along.Item2 * 0.1f), half, yaw, dx, dy);
-
-    // The radius r whose gate r + EPS is exactly `gate` in float32, so that in an unrotated cottage a centre placed at
-    // ±gate from an axis plane sits exactly on the gate's edge (where < and <= differ).
-    private static float ExactGate(float gate)
-    {
-        float r = gate - LandDefs.Epsilon;
-        for (int i = 0; i < 8 && r + LandDefs.Epsilon != gate; i++)
-        {
-            r = r + LandDefs.Epsilon > gate ? MathF.BitDecrement(r) : MathF.BitIncrement(r);
-        }
-
-        return r;
-    }
-
-    private static CellScene Without(CellScene full, CottagePlan plan, int rooms, int missing)
-    {
-        var keep = Enumerable.Range(0, rooms + 1).Where(i => i != missing).Select(i => full.GetEnvCell(plan.RoomId(i))).OfType<EnvCell>();
-        var blocks = Enumerable.Range(-1, 3).SelectMany(dx => Enumerable.Range(-1, 3).Select(dy => new LandblockId((byte)(plan.Block.X + dx), (byte)(plan.Block.Y + dy))));
-        return new CellScene(blocks, keep, full.Buildings.Values);
-    }
+        select new PartPlan(probe, half, yaw, dx, dy);
 
     // §5.2 as set statements; the outdoor part (§3.4, tested on its own) is the core's.
     private static CellArray ExpectedTransit(IScene scene, EnvCell cell, Part[] parts, IndoorFidelity fidelity, out List<string> kinds)
@@ -183,11 +144,6 @@ public sealed class PartsTransitProperties
 
     private static Sidedness Other(Sidedness s) => s == Sidedness.Positive ? Sidedness.Negative : Sidedness.Positive;
 
-    private static bool Same(CellArray a, CellArray b) =>
-        a.Count == b.Count && Enumerable.Range(0, a.Count).All(i => a[i] == b[i]);
-
-    private static string Text(CellArray a) => string.Join(",", Enumerable.Range(0, a.Count).Select(i => $"{a[i].Id}{(a[i].Loaded ? string.Empty : "?")}"));
-
     private sealed record Case(CellScene Scene, EnvCell Cell, PartPlan[] Plans, IndoorFidelity Fidelity, int PortalIndex)
     {
         public Part[] Parts { get; } = [.. Plans.Select(p => p.At(Cell))];
@@ -195,21 +151,15 @@ public sealed class PartsTransitProperties
         public override string ToString() => $"cell {Cell.Id}, {Parts.Length} parts, {Fidelity}";
     }
 
-    private sealed record PartPlan(int Portal, float Radius, float Distance, Vector2 Along, float Half, float Yaw, int BlockDx, int BlockDy)
+    private sealed record PartPlan(GateProbe Probe, float Half, float Yaw, int BlockDx, int BlockDy)
     {
-        // The centre: the room's middle projected onto the portal plane, moved along the plane and then to Distance.
+        // The centre: CottageProbe.OnPlane in the cell's block, then framed in the part's own block.
         public Part At(EnvCell cell)
         {
-            var plane = cell.Portals[Portal % cell.Portals.Length].Plane;
-            var mid = (cell.Volume.Bounds.Min + cell.Volume.Bounds.Max) / 2;
-            var foot = mid - (plane.Normal * plane.Distance(mid));
-            var t1 = Vector3.Normalize(Vector3.Cross(plane.Normal, MathF.Abs(plane.Normal.Z) < 0.9f ? Vector3.UnitZ : Vector3.UnitX));
-            var t2 = Vector3.Cross(plane.Normal, t1);
-            var local = foot + (t1 * Along.X) + (t2 * Along.Y) + (plane.Normal * Distance);
-            var inCellBlock = cell.Frame.LocalToGlobal(local);
+            var inCellBlock = CottageProbe.OnPlane(cell, Probe.Portal, Probe.Distance, Probe.Along);
             var partCell = new CellId((byte)(cell.Id.BlockX + BlockDx), (byte)(cell.Id.BlockY + BlockDy), 1);
             var origin = inCellBlock - new Vector3(LandDefs.BlockLength * BlockDx, LandDefs.BlockLength * BlockDy, 0);
-            return new Part(partCell, new Frame(origin, Quaternion.CreateFromAxisAngle(Vector3.UnitZ, Yaw)), new Box(new Vector3(-Half), new Vector3(Half)), Radius, false);
+            return new Part(partCell, new Frame(origin, Quaternion.CreateFromAxisAngle(Vector3.UnitZ, Yaw)), new Box(new Vector3(-Half), new Vector3(Half)), Probe.Radius, false);
         }
     }
 }

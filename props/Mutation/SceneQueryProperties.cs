@@ -3,6 +3,7 @@ using AcPhys.Core;
 using AcPhys.Spec.Scenes;
 using FsCheck;
 using FsCheck.Fluent;
+using static AcPhys.Props.Mutation.CottageProbe;
 
 namespace AcPhys.Props.Mutation;
 
@@ -165,14 +166,7 @@ public sealed class SceneQueryProperties
         from portal in Gen.Choose(0, cell.Portals.Length - 1)
         from distance in Gen.Elements(-1f, -0.4f, -0.1f, 0f, 0.1f, 0.4f, 1f)
         from along in Gen.Choose(-20, 20)
-        let plane = cell.Portals[portal].Plane
-        let mid = (cell.Volume.Bounds.Min + cell.Volume.Bounds.Max) / 2
-        let foot = mid - (plane.Normal * plane.Distance(mid))
-        let t1 = Vector3.Normalize(Vector3.Cross(plane.Normal, MathF.Abs(plane.Normal.Z) < 0.9f ? Vector3.UnitZ : Vector3.UnitX))
-        select cell.Frame.LocalToGlobal(foot + (t1 * along * 0.1f) + (plane.Normal * distance));
-
-    private static IEnumerable<LandblockId> Around(LandblockId block) =>
-        Enumerable.Range(-1, 3).SelectMany(dx => Enumerable.Range(-1, 3).Select(dy => new LandblockId((byte)(block.X + dx), (byte)(block.Y + dy))));
+        select CottageProbe.OnPlane(cell, portal, distance, new Vector2(along * 0.1f, 0));
 
     private static IEnumerable<EnvCell> Rooms(CellScene full, CottagePlan plan) =>
         Enumerable.Range(0, plan.Rooms + 1).Select(i => full.GetEnvCell(plan.RoomId(i))).OfType<EnvCell>();
@@ -181,8 +175,6 @@ public sealed class SceneQueryProperties
     // into the block so that a point across a block line still names a cell of this block.
     private static CellId LandAt(LandblockId block, Vector3 p) =>
         block.BlockCell.WithLow((ushort)((Math.Clamp((int)MathF.Floor(p.X / 24), 0, 7) * 8) + Math.Clamp((int)MathF.Floor(p.Y / 24), 0, 7) + 1));
-
-    private static string Text(CellArray a) => string.Join(",", Enumerable.Range(0, a.Count).Select(i => $"{a[i].Id}{(a[i].Loaded ? string.Empty : "?")}"));
 
     private sealed record Query(CellScene Scene, CellId Position, Sphere[] Spheres, CellId Current, CellQueryOptions Options, CellId StaleLand, Vector3 StalePoint)
     {

@@ -1,8 +1,8 @@
 using System.Numerics;
 using AcPhys.Core;
-using AcPhys.Spec.Scenes;
 using FsCheck;
 using FsCheck.Fluent;
+using static AcPhys.Props.Mutation.CottageProbe;
 
 namespace AcPhys.Props.Mutation;
 
@@ -75,69 +75,15 @@ public sealed class SphereTransitProperties
         }));
 
     private static Gen<Case> Cases { get; } =
-        from blockX in Gen.Choose(1, 250)
-        from blockY in Gen.Choose(1, 250)
-        from at in Gen.Zip(Gen.Choose(30, 150), Gen.Choose(30, 150))
-        from yaw in Gen.Elements(0f, MathF.PI / 2, 0.3f, -1.1f)
-        from rooms in Gen.Choose(1, 4)
-        from size in Gen.Elements(4f, 6f, 9f)
-        from flips in Gen.Choose(0, 15)
-        from backDoor in Gen.Elements(false, true)
-        from storey in Gen.Elements(false, true)
-        let plan = new CottagePlan((blockX * 192.0) + at.Item1, (blockY * 192.0) + at.Item2, yaw, rooms, size, size, flips, backDoor, storey)
-        let full = SceneBuild.Build(SceneKit.Cottage(plan))
-        from room in Gen.Choose(0, rooms - 1)
-        from missing in Gen.Choose(-1, rooms) // a room (or the storey) left out of the scene, or none
-        let cell = full.GetEnvCell(plan.RoomId(room))!
-        from spheres in Gen.Choose(1, 3).SelectMany(n => SphereGen(cell).ArrayOf(n))
+        from cottage in CottageProbe.Cottages
+        from probes in Gen.Choose(1, 3).SelectMany(n => CottageProbe.Probes(cottage.Cell).ArrayOf(n))
         from shift in Gen.Frequency((2, Gen.Constant((0, 0))), (1, Gen.Zip(Gen.Choose(-1, 1), Gen.Choose(-1, 1))))
         from fidelity in Fidelities
-        let scene = missing < 0 || missing == room ? full : Without(full, plan, rooms, missing)
+        let cell = cottage.Cell
         let position = new CellId((byte)(cell.Id.BlockX + shift.Item1), (byte)(cell.Id.BlockY + shift.Item2), 1)
         let offset = new Vector3(LandDefs.BlockLength * shift.Item1, LandDefs.BlockLength * shift.Item2, 0)
-        select new Case(scene, cell, position, [.. spheres.Select(s => s with { Center = s.Center - offset })], fidelity, rooms);
-
-    // A sphere around one of the cell's portal planes (in the cell's block frame): its centre at a signed distance
-    // from the plane exactly at, or one nudge off, the gate's ±(r + EPS), or well inside the room.
-    private static Gen<Sphere> SphereGen(EnvCell cell) =>
-        from portal in Gen.Choose(0, cell.Portals.Length - 1)
-        from radius in Gen.Frequency((1, Gen.Constant(0f)), (4, Gen.Elements(0.25f, 0.5f, 1.5f).Select(ExactGate)))
-        from edge in Gen.Elements(-1, 0, 1, 2)
-        from sign in Gen.Elements(-1f, 1f)
-        from nudge in Gen.Frequency((3, Gen.Constant(0f)), (2, Gen.Elements(-0.001f, 0.001f, -0.5f, 0.5f, 3f)))
-        from along in Gen.Zip(Gen.Choose(-30, 30), Gen.Choose(-30, 30))
-        let distance = edge == 2 ? nudge : (sign * (radius + LandDefs.Epsilon) * edge) + nudge
-        select new Sphere(OnPlane(cell, portal, distance, new Vector2(along.Item1 * 0.1f, along.Item2 * 0.1f)), radius);
-
-    // The radius r whose gate r + EPS is exactly `gate` in float32 (so < and <= differ at ±gate from an axis plane).
-    private static float ExactGate(float gate)
-    {
-        float r = gate - LandDefs.Epsilon;
-        for (int i = 0; i < 8 && r + LandDefs.Epsilon != gate; i++)
-        {
-            r = r + LandDefs.Epsilon > gate ? MathF.BitDecrement(r) : MathF.BitIncrement(r);
-        }
-
-        return r;
-    }
-
-    // The room's middle projected onto the portal plane, moved along the plane and then to `distance` from it.
-    private static Vector3 OnPlane(EnvCell cell, int portalIndex, float distance, Vector2 along)
-    {
-        var plane = cell.Portals[portalIndex].Plane;
-        var mid = (cell.Volume.Bounds.Min + cell.Volume.Bounds.Max) / 2;
-        var foot = mid - (plane.Normal * plane.Distance(mid));
-        var t1 = Vector3.Normalize(Vector3.Cross(plane.Normal, MathF.Abs(plane.Normal.Z) < 0.9f ? Vector3.UnitZ : Vector3.UnitX));
-        var t2 = Vector3.Cross(plane.Normal, t1);
-        return cell.Frame.LocalToGlobal(foot + (t1 * along.X) + (t2 * along.Y) + (plane.Normal * distance));
-    }
-
-    private static CellScene Without(CellScene full, CottagePlan plan, int rooms, int missing)
-    {
-        var keep = Enumerable.Range(0, rooms + 1).Where(i => i != missing).Select(i => full.GetEnvCell(plan.RoomId(i))).OfType<EnvCell>();
-        var blocks = Enumerable.Range(-1, 3).SelectMany(dx => Enumerable.Range(-1, 3).Select(dy => new LandblockId((byte)(plan.Block.X + dx), (byte)(plan.Block.Y + dy))));
-        return new CellScene(blocks, keep, full.Buildings.Values);
-    }
+        let spheres = probes.Select(p => new Sphere(CottageProbe.OnPlane(cell, p.Portal, p.Distance, p.Along) - offset, p.Radius)).ToArray()
+        select new Case(cottage.Scene, cell, position, spheres, fidelity, cottage.Plan.Rooms);
 
     // The centre a test reads in `cell`'s block frame: as given (retail, §6.11), or moved by the block offset.
     private static Vector3 Used(Case c, Sphere s, CellId cell) => c.Fidelity.ReframeTransit
@@ -191,11 +137,6 @@ public sealed class SphereTransitProperties
 
         return expected;
     }
-
-    private static bool Same(CellArray a, CellArray b) =>
-        a.Count == b.Count && a.AddedOutside == b.AddedOutside && Enumerable.Range(0, a.Count).All(i => a[i] == b[i]);
-
-    private static string Text(CellArray a) => string.Join(",", Enumerable.Range(0, a.Count).Select(i => $"{a[i].Id}{(a[i].Loaded ? string.Empty : "?")}"));
 
     private sealed record Case(CellScene Scene, EnvCell Cell, CellId Position, Sphere[] Spheres, IndoorFidelity Fidelity, int Rooms)
     {
