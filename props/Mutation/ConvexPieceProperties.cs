@@ -212,7 +212,47 @@ public sealed class ConvexPieceProperties
             return (piece.Vertices.Count == 8 && each).Label($"{piece.Vertices.Count} corners").Classify(centre.Length() > 1024, "over 1 km out (float steps over 1e-4)");
         }));
 
-    // Yawed boxes 1–10 m a side whose centre is up to 5.6 km from the local origin (further out the fixed 1e-3 corner tolerance is below float resolution: docs/mutation.md), where float steps exceed 1e-4.
+    [Fact(DisplayName = "facts §5.7: a thin tilted wedge (a roof rising by m·y over a floor, m = 0.03–0.3) has 6 corners, each found once, though its sharp edge's corners come from ill-conditioned plane triples")]
+    public void ThinWedge_HasEachCornerOnce() =>
+        Check.One(FixedSeed.Config(0x1D00_0047), Prop.ForAll(ThinWedges.ToArbitrary(), t =>
+        {
+            var (at, length, width, slope, turn) = t;
+            var rotation = Quaternion.CreateFromAxisAngle(Vector3.Normalize(new Vector3(0.3f, 0.5f, 0.8f)), turn);
+            CellPlane Plane(Vector3 inward, Vector3 through) => CellPlane.Through(Vector3.Transform(inward, rotation), at + Vector3.Transform(through, rotation));
+
+            // In the wedge's own frame: x ∈ [0, length], y ≤ width, z ≥ 0 (floor), z ≤ m·y (roof); the floor and the
+            // roof meet along the x axis. Listed so that they are neighbours after an x plane: the sharp-edge corners
+            // (x plane, floor, roof) have |det| ≈ m, so rounding in the intersection is amplified by 1/m, and a
+            // tilted frame gives every plane three non-zero normal components.
+            var piece = new ConvexPiece(
+            [
+                Plane(Vector3.UnitX, Vector3.Zero),
+                Plane(Vector3.UnitZ, Vector3.Zero),
+                Plane(new Vector3(0, slope, -1), Vector3.Zero),
+                Plane(-Vector3.UnitX, new Vector3(length, 0, 0)),
+                Plane(-Vector3.UnitY, new Vector3(0, width, 0)),
+            ]);
+            var corners = new[] { 0f, length }.SelectMany(x => new[] { new Vector3(x, 0, 0), new Vector3(x, width, 0), new Vector3(x, width, slope * width) }).ToArray();
+            var local = piece.Vertices.Select(v => Vector3.Transform(v - at, Quaternion.Conjugate(rotation))).ToArray();
+            float thickness = slope * width; // the far end's two corners are this far apart, in z only
+            bool Near(Vector3 v, Vector3 c) => MathF.Abs(v.X - c.X) < 0.05f && MathF.Abs(v.Y - c.Y) < 0.05f && MathF.Abs(v.Z - c.Z) < thickness / 3;
+            bool each = corners.All(c => local.Count(v => Near(v, c)) == 1);
+            return (piece.Vertices.Count == 6 && each).Label($"{piece.Vertices.Count} corners: {string.Join(" ", local)}").Collect(slope);
+        }));
+
+    // Thin wedges 2–20 m long and wide, tilted, their sharp edge anywhere within 100 m of the local origin. Slopes
+    // below ~0.01 lose a sharp-edge corner (its error, about |D|·ulp / m, passes the 1e-3 tolerance): docs/indoor.md.
+    private static Gen<(Vector3 At, float Length, float Width, float Slope, float Turn)> ThinWedges { get; } =
+        from x in Gen.Choose(-1000, 1000)
+        from y in Gen.Choose(-1000, 1000)
+        from z in Gen.Choose(-1000, 1000)
+        from length in Gen.Choose(2, 20)
+        from width in Gen.Choose(2, 20)
+        from slope in Gen.Elements(0.03f, 0.1f, 0.3f)
+        from turn in Gen.Elements(0.4f, 1.3f, 2.2f, -0.7f)
+        select (new Vector3(x * 0.1037f, y * 0.0991f, z * 0.1013f), (float)length, (float)width, slope, turn);
+
+    // Yawed boxes 1–10 m a side whose centre is up to 5.6 km from the local origin (further out the fixed 1e-3 corner tolerance is below float resolution: docs/indoor.md), where float steps exceed 1e-4.
     private static Gen<(Vector3 Centre, Vector3 Half, float Yaw)> FarYawedBoxes { get; } =
         from x in Gen.Choose(-4000, 4000)
         from y in Gen.Choose(-4000, 4000)
