@@ -58,6 +58,28 @@ public sealed class DoubleMutationTests
             return !floatOk && !doubleOk && did == CellId.None && fid == CellId.None && dx == x && dy == y && fx == x && fy == y;
         }));
 
+    [Fact(DisplayName = "facts §2.1 step 4: the double re-seat names the float32 re-seat's cell and re-bases each axis exactly, v − 192·(block step), into [0, 192)")]
+    public void AdjustToOutsideInDouble_RebasesEachAxisExactly() =>
+        Check.One(FixedSeed.Config(0xD0B1_0004), Prop.ForAll(PickCases.ToArbitrary(), c =>
+        {
+            CellId single = c.Position, exact = c.Position;
+            float fx = c.Center.X, fy = c.Center.Y;
+            double dx = c.Center.X, dy = c.Center.Y;
+            bool ok = LandDefs.AdjustToOutside(ref single, ref fx, ref fy);
+            if (LandDefs.AdjustToOutsideInDouble(ref exact, ref dx, ref dy) != ok || exact != single)
+            {
+                return false.Label($"{c.Position} {c.Center}: {exact} vs float32 {single}");
+            }
+
+            // The snap (|v| < EPS → 0) happens before the re-base, so the expected value starts from the snapped input.
+            double Snapped(float v) => Math.Abs(v) < LandDefs.Epsilon ? 0 : v;
+            double ex = Snapped(c.Center.X) - (LandDefs.BlockLength * (exact.BlockX - c.Position.BlockX));
+            double ey = Snapped(c.Center.Y) - (LandDefs.BlockLength * (exact.BlockY - c.Position.BlockY));
+            bool rebased = !ok || (dx == ex && dy == ey && dx >= 0 && dx < 192 && dy >= 0 && dy < 192);
+            return rebased.Label($"{c.Position} {c.Center} → {exact} ({dx}, {dy}), expected ({ex}, {ey})")
+                .Classify(ok && exact.Landblock != c.Position.Landblock, "moved to another block").Classify(!ok, "off the map");
+        }));
+
     // Positions anywhere on the map (edges often), centres on a 1/4 m grid around the block (24 m lines often),
     // radii up to two cells, a current cell drawn from the array, and a landscape with some blocks unloaded.
     private static Gen<PickCase> PickCases { get; } =

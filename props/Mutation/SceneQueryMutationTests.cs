@@ -110,6 +110,30 @@ public sealed class SceneQueryMutationTests
         Assert.Contains(Room0, array.ToIdArray());
     }
 
+    [Fact(DisplayName = "facts §4 step 4a: a load hint is never walked, even one ACE made for a cell the scene holds (a neighbour missing from VisibleCells)")]
+    public void FindCellList_LoadHintsAreNotWalked()
+    {
+        // Room 0 lists no visible cells, so ACE resolves its door to room 1 as a hint; the sphere also straddles
+        // room 1's back door plane (y = 56), which would bring the land in if room 1 were walked.
+        var plan = new CottagePlan((0xA9 * 192.0) + 50, (0xB4 * 192.0) + 50, 0f, 2, 6f, 6f, 0, true, false);
+        var full = SceneBuild.Build(SceneKit.Cottage(plan));
+        var room0 = full.GetEnvCell(Room0)!;
+        var blind = new EnvCell(Room0, room0.Frame, room0.Volume, room0.Portals.ToArray(), []);
+        var scene = new CellScene([Room0.Landblock], [blind, full.GetEnvCell(Room1)!], full.Buildings.Values);
+        var options = new CellQueryOptions(PickPolicy.Retail, Pick: false, LoadCells: true, new IndoorFidelity(AceNeighbourViaVisibleCells: true));
+        Sphere[] corner = [new Sphere(new Vector3(55.9f, 55.9f, 1), 0.5f)];
+
+        var array = new CellArray();
+        SceneQuery.FindCellList(array, scene, Room0, corner, CellId.None, options);
+        Assert.Equal([new CellEntry(Room0, true), new CellEntry(Room1, false)], Enumerable.Range(0, array.Count).Select(i => array[i]).ToArray());
+
+        // The same query with room 1 visible walks it, and its back door lets the land in.
+        var seen = new CellScene([Room0.Landblock], [room0, full.GetEnvCell(Room1)!], full.Buildings.Values);
+        var walked = new CellArray();
+        SceneQuery.FindCellList(walked, seen, Room0, corner, CellId.None, options);
+        Assert.Contains(walked.ToIdArray(), id => id.IsLand);
+    }
+
     [Fact(DisplayName = "facts §4 step 4b (current-first): a current cell the array does not hold is ignored, and the ordinary pick is made")]
     public void PickContaining_CurrentNotInTheArrayIsIgnored()
     {
