@@ -37,7 +37,7 @@ public static class IndoorAccuracyClass
             var frame = new Frame(cell.Origin, cell.Rotation);
             var offset = LandDefs.GetBlockOffset(position, cell.Id);
             var pieces = cell.Pieces.Select(p => p.ToConvex()).ToArray();
-            var bounds = Union(pieces);
+            var bounds = ConvexPiece.BoundsOf(pieces);
             foreach (var s in spheres)
             {
                 var local = frame.GlobalToLocal(s.Center - offset);
@@ -60,7 +60,7 @@ public static class IndoorAccuracyClass
         foreach (var cell in scene.Cells)
         {
             var local = new Frame(cell.Origin, cell.Rotation).GlobalToLocal(center - LandDefs.GetBlockOffset(position, cell.Id));
-            var bounds = Union([.. cell.Pieces.Select(p => p.ToConvex())]);
+            var bounds = ConvexPiece.BoundsOf([.. cell.Pieces.Select(p => p.ToConvex())]);
             float d = Vector3.Distance(Vector3.Clamp(local, bounds.Min, bounds.Max), local);
             if (d < nearest)
             {
@@ -104,18 +104,5 @@ public static class IndoorAccuracyClass
         }
 
         return pieces[0].Contains(c) ? 3 : 2;
-    }
-
-    private static Box Union(ConvexPiece[] pieces)
-    {
-        var min = pieces[0].Bounds.Min;
-        var max = pieces[0].Bounds.Max;
-        foreach (var p in pieces)
-        {
-            min = Vector3.Min(min, p.Bounds.Min);
-            max = Vector3.Max(max, p.Bounds.Max);
-        }
-
-        return new Box(min, max);
     }
 }
