@@ -304,11 +304,7 @@ public sealed class ConvexPieceProperties
         let planes = new[] { new CellPlane(Vector3.UnitX, 0), new CellPlane(-Vector3.UnitX, 1), new CellPlane(Vector3.UnitY, 0), new CellPlane(-Vector3.UnitY, 1), end }
         select (order.Select(i => planes[i]).ToArray(), up);
 
-    private static IEnumerable<Vector3> Corners(Vector3 min, Vector3 max) =>
-        from x in new[] { min.X, max.X }
-        from y in new[] { min.Y, max.Y }
-        from z in new[] { min.Z, max.Z }
-        select new Vector3(x, y, z);
+    private static IEnumerable<Vector3> Corners(Vector3 min, Vector3 max) => Enumerable.Range(0, 8).Select(new Box(min, max).Corner);
 
     private static float Coordinate(float min, float max, int k) => k switch
     {

@@ -8,9 +8,8 @@ namespace AcPhys.Props.Mutation;
 
 /// <summary>
 /// What the cottage-based transit properties share: a generated cottage (yaw, 1–4 rooms, both PortalSide values, back
-/// door, storey) with one room picked and perhaps one room left out of the scene, probes placed at a signed distance
-/// from one of that room's portal planes (exactly on the ±(r + EPS) gate edges, one nudge off, or well inside), and
-/// array comparison and text.
+/// door, storey) with one room picked and perhaps one room left out of the scene, and probes placed at a signed
+/// distance from one of that room's portal planes (exactly on the ±(r + EPS) gate edges, one nudge off, or well inside).
 /// </summary>
 internal static class CottageProbe
 {
@@ -80,18 +79,6 @@ internal static class CottageProbe
     /// <returns>Nine blocks.</returns>
     public static IEnumerable<LandblockId> Around(LandblockId block) =>
         Enumerable.Range(-1, 3).SelectMany(dx => Enumerable.Range(-1, 3).Select(dy => new LandblockId((byte)(block.X + dx), (byte)(block.Y + dy))));
-
-    /// <summary>Tests two arrays for the same entries in the same order and the same outdoor latch.</summary>
-    /// <param name="a">One array.</param>
-    /// <param name="b">The other.</param>
-    /// <returns>True when equal.</returns>
-    public static bool Same(CellArray a, CellArray b) =>
-        a.Count == b.Count && a.AddedOutside == b.AddedOutside && Enumerable.Range(0, a.Count).All(i => a[i] == b[i]);
-
-    /// <summary>Returns an array as text, a load hint marked with "?".</summary>
-    /// <param name="a">The array.</param>
-    /// <returns>The text.</returns>
-    public static string Text(CellArray a) => string.Join(",", Enumerable.Range(0, a.Count).Select(i => $"{a[i].Id}{(a[i].Loaded ? string.Empty : "?")}"));
 
     private static CellScene Without(CellScene full, CottagePlan plan, int missing)
     {

@@ -135,7 +135,7 @@ public sealed class DoubleMutationTests
         return new CellScene(blocks, [], []);
     }
 
-    private static bool[] Loaded(CellArray array) => Enumerable.Range(0, array.Count).Select(i => array[i].Loaded).ToArray();
+    private static bool[] Loaded(CellArray array) => [.. CellArrays.Entries(array).Select(e => e.Loaded)];
 
     private sealed record PickCase(CellId Position, Vector3 Center, float Radius, int CurrentIndex, CellScene Land, bool Drop);
 }

@@ -159,20 +159,20 @@ public sealed class IndoorMutationTests
 
         var array = new CellArray();
         EnvTransitParts.FindTransitCells(array, alone, room0, [part], IndoorFidelity.Retail);
-        Assert.Equal([new CellEntry(Room1, false)], Entries(array));
+        Assert.Equal([new CellEntry(Room1, false)], CellArrays.Entries(array));
 
         array.Reset();
         EnvTransitParts.FindTransitCells(array, alone, room0, [part], new IndoorFidelity(AceLoadHintLowKey: true));
-        Assert.Equal([new CellEntry(new CellId(Room1.Low), false)], Entries(array));
+        Assert.Equal([new CellEntry(new CellId(Room1.Low), false)], CellArrays.Entries(array));
 
         // Loaded, but ACE looks the neighbour up in VisibleCells only: a room not listed there is a hint too.
         array.Reset();
         var blind = new EnvCell(Room0, room0.Frame, room0.Volume, room0.Portals.ToArray(), []);
         EnvTransitParts.FindTransitCells(array, cottage, blind, [part], new IndoorFidelity(AceNeighbourViaVisibleCells: true));
-        Assert.Equal([new CellEntry(Room1, false)], Entries(array));
+        Assert.Equal([new CellEntry(Room1, false)], CellArrays.Entries(array));
         array.Reset();
         EnvTransitParts.FindTransitCells(array, cottage, blind, [part], IndoorFidelity.Retail);
-        Assert.Equal([new CellEntry(Room1, true)], Entries(array));
+        Assert.Equal([new CellEntry(Room1, true)], CellArrays.Entries(array));
     }
 
     // Bounds and query boxes whose faces often sit exactly at bound ± tolerance, where <= and < differ.
@@ -221,6 +221,4 @@ public sealed class IndoorMutationTests
         (1, Gen.Choose(-300, 300).Select(i => i * 0.01f)));
 
     private static string Rejects(CellPlane[] planes) => Assert.Throws<ArgumentException>(() => new ConvexPiece(planes)).Message;
-
-    private static CellEntry[] Entries(CellArray array) => Enumerable.Range(0, array.Count).Select(i => array[i]).ToArray();
 }

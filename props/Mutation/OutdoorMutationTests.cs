@@ -207,7 +207,7 @@ public sealed class OutdoorMutationTests
             var id = LandDefs.LcoordToGid(x, y);
             bool loaded = !id.IsNone && Checkerboard.Instance.IsLoaded(id.Landblock);
             CellEntry[] expected = id.IsNone || (ace && !loaded) ? [] : [new CellEntry(id, loaded)];
-            return fidelity.DropUnloadedCells == ace && Entries(array).SequenceEqual(expected);
+            return fidelity.DropUnloadedCells == ace && CellArrays.Entries(array).SequenceEqual(expected);
         }));
 
     /// <summary>Sequences of array operations over a small pool of ids, so duplicates and removals of present ids are common.</summary>
@@ -254,7 +254,7 @@ public sealed class OutdoorMutationTests
 
     private static bool SameAs(CellArray array, List<CellEntry> model)
     {
-        if (array.Count != model.Count || !Entries(array).SequenceEqual(model) || !array.ToIdArray().SequenceEqual(model.Select(e => e.Id)))
+        if (array.Count != model.Count || !CellArrays.Entries(array).SequenceEqual(model) || !array.ToIdArray().SequenceEqual(model.Select(e => e.Id)))
         {
             return false;
         }
@@ -271,8 +271,6 @@ public sealed class OutdoorMutationTests
 
         return true;
     }
-
-    private static IEnumerable<CellEntry> Entries(CellArray array) => Enumerable.Range(0, array.Count).Select(i => array[i]);
 
     /// <summary>Loads the landblocks whose bytes have an even sum.</summary>
     private sealed class Checkerboard : ILandscape

@@ -125,7 +125,7 @@ public sealed class SceneQueryMutationTests
 
         var array = new CellArray();
         SceneQuery.FindCellList(array, scene, Room0, corner, CellId.None, options);
-        Assert.Equal([new CellEntry(Room0, true), new CellEntry(Room1, false)], Enumerable.Range(0, array.Count).Select(i => array[i]).ToArray());
+        Assert.Equal([new CellEntry(Room0, true), new CellEntry(Room1, false)], CellArrays.Entries(array));
 
         // The same query with room 1 visible walks it, and its back door lets the land in.
         var seen = new CellScene([Room0.Landblock], [room0, full.GetEnvCell(Room1)!], full.Buildings.Values);

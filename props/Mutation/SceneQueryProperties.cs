@@ -3,7 +3,7 @@ using AcPhys.Core;
 using AcPhys.Spec.Scenes;
 using FsCheck;
 using FsCheck.Fluent;
-using static AcPhys.Props.Mutation.CottageProbe;
+using static AcPhys.Props.Mutation.CellArrays;
 
 namespace AcPhys.Props.Mutation;
 
@@ -48,7 +48,7 @@ public sealed class SceneQueryProperties
             var probe = q with { Options = q.Options with { LoadCells = true } }; // no filter: what was added stays
             var (_, array) = probe.Run();
             bool walked = q.Spheres.Length > 0 && q.Scene.GetEnvCell(q.Position) is not null
-                && Enumerable.Range(0, array.Count).Any(i => array[i].Loaded && array[i].Id.IsLand);
+                && Entries(array).Any(e => e.Loaded && e.Id.IsLand);
             var outdoor = new CellArray();
             OutdoorCells.AddAllOutsideCells(outdoor, q.Position, Vector3.Zero, q.Spheres, q.Scene, q.Fidelity.Outdoor);
             bool ok = !walked || outdoor.ToIdArray().All(array.Contains);
@@ -66,7 +66,7 @@ public sealed class SceneQueryProperties
             bool guard = q.Fidelity.AceFilterOutsideGuard || (visible is not null && q.Spheres.Length > 0);
             bool earlyReturn = q.Fidelity.AceEarlyReturn && probe.Options.Pick && visible is not null && q.Spheres.Length > 0 && result.Containing.IsEnv;
             bool filtered = q.Position.IsIndoorByLowWord && guard && !earlyReturn;
-            bool ok = !filtered || Enumerable.Range(0, array.Count).Select(i => array[i]).All(e =>
+            bool ok = !filtered || Entries(array).All(e =>
                 !e.Loaded || e.Id == q.Position || (visible is not null && visible.Sees(e.Id) && q.Scene.GetEnvCell(e.Id) is not null));
             return ok.Label($"{q}: {Text(array)}")
                 .Classify(filtered && !probe.Options.Pick, "filtered, no pick").Classify(earlyReturn, "ACE early return");
@@ -96,7 +96,7 @@ public sealed class SceneQueryProperties
         {
             var (plan, mask, extra) = t;
             var full = SceneBuild.Build(SceneKit.Cottage(plan));
-            var blocks = Around(plan.Block).Where((_, i) => (mask & (1 << i)) != 0).ToArray();
+            var blocks = CottageProbe.Around(plan.Block).Where((_, i) => (mask & (1 << i)) != 0).ToArray();
             var scene = new CellScene(blocks, Rooms(full, plan), full.Buildings.Values);
             bool loaded = blocks.Contains(plan.Block);
             var room = plan.RoomId(extra % (plan.Rooms + 2)); // one past the rooms (and the storey) is never declared
@@ -130,7 +130,7 @@ public sealed class SceneQueryProperties
         from plan in Plans
         let full = SceneBuild.Build(SceneKit.Cottage(plan))
         from blockUnloaded in Gen.Elements(false, false, false, true)
-        let scene = blockUnloaded ? new CellScene(Around(plan.Block).Where(b => b != plan.Block), Rooms(full, plan), full.Buildings.Values) : full
+        let scene = blockUnloaded ? new CellScene(CottageProbe.Around(plan.Block).Where(b => b != plan.Block), Rooms(full, plan), full.Buildings.Values) : full
         from room in Gen.Choose(0, plan.Rooms - 1)
         let cell = full.GetEnvCell(plan.RoomId(room))!
         from point in Gen.Frequency((2, DoorPoint(cell)), (1, Gen.Zip(Gen.Choose(-30, 30), Gen.Choose(-30, 30)).Select(p => plan.Origin + new Vector3(p.Item1 * 0.7f, p.Item2 * 0.7f, 1))))

@@ -2,7 +2,7 @@ using System.Numerics;
 using AcPhys.Core;
 using FsCheck;
 using FsCheck.Fluent;
-using static AcPhys.Props.Mutation.CottageProbe;
+using static AcPhys.Props.Mutation.CellArrays;
 
 namespace AcPhys.Props.Mutation;
 
