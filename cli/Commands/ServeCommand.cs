@@ -27,21 +27,32 @@ internal static class ServeCommand
             Description = "The pick policy to serve: retail (default) or current-first.",
             HelpName = "POLICY",
         };
-        var command = new Command("serve", "Serve the reference core over protocol v1 on stdin/stdout (docs/protocol.md); ends at end of input.") { fault, pick };
-        command.SetAction(parse => Guard.Run("serve", () => Run(parse.GetValue(fault), parse.GetValue(pick))));
+        var fidelity = new Option<string>("--fidelity")
+        {
+            Description = "Serve the reference with these documented deviations, declared in hello (comma-separated: ace, double, ace-early-return, ...; docs/protocol.md).",
+            HelpName = "NAMES",
+        };
+        var command = new Command("serve", "Serve the reference core over protocol v1 on stdin/stdout (docs/protocol.md); ends at end of input.") { fault, pick, fidelity };
+        command.SetAction(parse => Guard.Run("serve", () => Run(parse.GetValue(fault), parse.GetValue(pick), parse.GetValue(fidelity))));
         return command;
     }
 
-    private static int Run(string? faultId, string? pickName)
+    private static int Run(string? faultId, string? pickName, string? fidelityNames)
     {
         if (!PickNames.TryParse(pickName, out var pick))
         {
             throw new UsageException($"unknown pick policy '{pickName}' (known: retail, current-first)");
         }
 
-        ICellPhysics impl = pick == AcPhys.Core.PickPolicy.CurrentFirst ? ReferenceAdapter.CurrentFirst : ReferenceAdapter.Instance;
+        var fidelity = Impl.ReferenceChoice.ParseFidelity(fidelityNames);
+        ICellPhysics impl = Impl.ReferenceChoice.Create(pick, fidelity);
         if (faultId is not null)
         {
+            if (fidelity != default)
+            {
+                throw new UsageException("--fault serves a planted fault in retail mode; it does not combine with --fidelity");
+            }
+
             if (PlantedFaults.Find(faultId) is not { } fault)
             {
                 throw new UsageException($"unknown fault '{faultId}' (known: {string.Join(", ", PlantedFaults.All.Select(f => f.Id))})");

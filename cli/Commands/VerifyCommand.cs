@@ -52,6 +52,11 @@ internal static class VerifyCommand
             Description = "The pick policy of the bundled reference: retail (default) or current-first (acdream's hysteresis).",
             HelpName = "POLICY",
         };
+        var fidelity = new Option<string>("--fidelity")
+        {
+            Description = "Documented deviations of the bundled reference (comma-separated: ace, double, ace-early-return, ...; see docs/protocol.md).",
+            HelpName = "NAMES",
+        };
         var cases = new Option<int?>("--cases")
         {
             Description = "Generated cases per invariant, instead of the profile's (e.g. a small budget for a slow --impl-cmd).",
@@ -63,7 +68,7 @@ internal static class VerifyCommand
         var implOptions = new ImplementationOptions();
         var command = new Command("verify", "Run the invariant catalogue against the reference core, a planted fault, or your implementation (--impl, --impl-cmd), and report.")
         {
-            profile, only, seed, baseSeed, fault, quiet, classes, pick, cases, sweeps, junit, markdown,
+            profile, only, seed, baseSeed, fault, quiet, classes, pick, fidelity, cases, sweeps, junit, markdown,
         };
         foreach (var option in implOptions.All)
         {
@@ -81,6 +86,7 @@ internal static class VerifyCommand
                 Pick = PickNames.TryParse(parse.GetValue(pick), out var policy)
                     ? policy
                     : throw new UsageException($"unknown pick policy '{parse.GetValue(pick)}' (known: retail, current-first)"),
+                Fidelity = Impl.ReferenceChoice.ParseFidelity(parse.GetValue(fidelity)),
                 Implementation = implOptions.Read(parse),
                 CasesOverride = parse.GetValue(cases),
                 JunitPath = parse.GetValue(junit),
@@ -96,9 +102,14 @@ internal static class VerifyCommand
 
     private static VerifySettings WithBudget(VerifySettings settings, bool sweeps)
     {
-        if (settings.Implementation.IsExternal && (settings.Fault is not null || settings.Pick != AcPhys.Core.PickPolicy.Retail))
+        if (settings.Implementation.IsExternal && (settings.Fault is not null || settings.Pick != AcPhys.Core.PickPolicy.Retail || settings.Fidelity != default))
         {
-            throw new UsageException("--fault and --pick configure the bundled reference; they do not apply to --impl / --impl-cmd");
+            throw new UsageException("--fault, --pick and --fidelity configure the bundled reference; they do not apply to --impl / --impl-cmd (an implementation declares its mode in hello)");
+        }
+
+        if (settings.Fault is not null && settings.Fidelity != default)
+        {
+            throw new UsageException("--fault plants a fault in the retail reference; it does not combine with --fidelity");
         }
 
         if (sweeps && !settings.Implementation.IsProcess)
@@ -129,8 +140,7 @@ internal static class VerifyCommand
     {
         if (!settings.Implementation.IsExternal)
         {
-            ICellPhysics reference = settings.Fault is not null ? PlantedFaults.Create(settings.Fault.Id)
-                : settings.Pick == AcPhys.Core.PickPolicy.CurrentFirst ? ReferenceAdapter.CurrentFirst : ReferenceAdapter.Instance;
+            ICellPhysics reference = settings.Fault is not null ? PlantedFaults.Create(settings.Fault.Id) : Impl.ReferenceChoice.Create(settings.Pick, settings.Fidelity);
             return Run(settings, reference);
         }
 

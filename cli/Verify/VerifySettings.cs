@@ -32,6 +32,9 @@ internal sealed record VerifySettings
     /// <summary>Gets the pick policy the bundled reference runs with (<c>--pick</c>).</summary>
     public AcPhys.Core.PickPolicy Pick { get; init; }
 
+    /// <summary>Gets the documented deviations of the bundled reference (<c>--fidelity</c>; retail by default).</summary>
+    public (AcPhys.Core.IndoorFidelity Indoor, AcPhys.Core.OutdoorFidelity Outdoor) Fidelity { get; init; }
+
     /// <summary>Gets the implementation under test (the bundled reference unless <c>--impl</c> / <c>--impl-cmd</c>).</summary>
     public Impl.ImplementationChoice Implementation { get; init; } = Impl.ImplementationChoice.Reference;
 

@@ -95,6 +95,30 @@ public interface ICellPhysics
     /// <returns>The cells (load hints included) and the containing cell.</returns>
     FindCellResult FindCell(Scene? scene, CellId cell, IReadOnlyList<Sphere> spheres, CellId current) =>
         scene is null ? FindCell(cell, spheres, current) : throw new NotSupportedException("find_cell_scene");
+
+    /// <summary>
+    /// <c>find_cell_scene</c> as a movement transition asks it (LoadCells true: retail's CTransition sets
+    /// do_not_load_cells = 0, so the indoor visibility filter does not run, facts §4 step 5, §6.14). Offered when
+    /// <see cref="Ops"/> has <see cref="Op.FindCellTransition"/>; with <paramref name="loadCells"/> false it is
+    /// <see cref="FindCell(Scene?, CellId, IReadOnlyList{Sphere}, CellId)"/>.
+    /// </summary>
+    /// <param name="scene">The scene, or null for open land.</param>
+    /// <param name="cell">The position's cell id.</param>
+    /// <param name="spheres">Centres in <paramref name="cell"/>'s block frame.</param>
+    /// <param name="current">The current cell, or <see cref="CellId.None"/>.</param>
+    /// <param name="loadCells">True for a transition query (no visibility filter).</param>
+    /// <returns>The cells and the containing cell.</returns>
+    FindCellResult FindCell(Scene? scene, CellId cell, IReadOnlyList<Sphere> spheres, CellId current, bool loadCells) =>
+        loadCells ? throw new NotSupportedException("find_cell_transition") : FindCell(scene, cell, spheres, current);
+
+    /// <summary>
+    /// Gets the documented indoor deviations the implementation declares (facts §7 #6–#13; retail when it says
+    /// nothing). The conformance invariants compare it with the reference in the same mode, never failing it for them.
+    /// </summary>
+    IndoorFidelity Indoor => IndoorFidelity.Retail;
+
+    /// <summary>Gets the documented outdoor deviations the implementation declares (facts §7 #2; the double-precision mode).</summary>
+    OutdoorFidelity Outdoor => OutdoorFidelity.Retail;
 }
 
 /// <summary>The answer of <c>find_cell</c>.</summary>
@@ -102,6 +126,12 @@ public interface ICellPhysics
 /// <param name="Containing">The containing cell, or <see cref="CellId.None"/>.</param>
 public sealed record FindCellResult(IReadOnlyList<CellId> Cells, CellId Containing)
 {
-    /// <summary>Gets a value indicating whether the query reported HitsInteriorCell (scene queries only).</summary>
-    public bool HitsInteriorCell { get; init; }
+    /// <summary>Gets HitsInteriorCell as the implementation reported it, or null when it did not (protocol v1 makes it optional).</summary>
+    public bool? HitsInteriorCell { get; init; }
+
+    /// <summary>
+    /// Gets, parallel to <see cref="Cells"/>, whether each entry is a loaded cell (false: a load hint, retail's null
+    /// payload, facts §3.1, §5.1), or null when the implementation did not report it.
+    /// </summary>
+    public IReadOnlyList<bool>? Loaded { get; init; }
 }

@@ -37,6 +37,9 @@ public enum Op
     /// <summary><c>find_cell_scene</c>: find_cell_list over a scene (env cells, portals, buildings; docs/indoor.md).</summary>
     FindCellScene = 1 << 9,
 
+    /// <summary><c>find_cell_transition</c>: find_cell_scene as a movement transition asks it (no visibility filter); an optional extension of protocol v1.</summary>
+    FindCellTransition = 1 << 10,
+
     /// <summary>Every LandDefs operation.</summary>
     LandDefs = BlockIdToLcoord | GidToLcoord | LcoordToGid | InboundValidCellId | GetOutsideLcoord | AdjustToOutside,
 
@@ -44,7 +47,7 @@ public enum Op
     All = LandDefs | OutsideCells | FindCell | OutsideCellsParts,
 
     /// <summary>Every operation an invariant may need: <see cref="All"/> and scenes.</summary>
-    Every = All | FindCellScene,
+    Every = All | FindCellScene | FindCellTransition,
 }
 
 /// <summary>Protocol names of <see cref="Op"/> values.</summary>
@@ -62,6 +65,7 @@ public static class OpNames
         (Op.FindCell, "find_cell"),
         (Op.OutsideCellsParts, "outside_cells_parts"),
         (Op.FindCellScene, "find_cell_scene"),
+        (Op.FindCellTransition, "find_cell_transition"),
     ];
 
     /// <summary>Returns the protocol names of every flag set in <paramref name="ops"/>.</summary>

@@ -28,7 +28,10 @@ public sealed class ReferenceAdapter(PickPolicy pick = PickPolicy.Retail, PartsF
         + (Indoor == default ? string.Empty : "+indoor" + Indoor.ToString()[nameof(IndoorFidelity).Length..]) + (Volumes == VolumeMode.Aabb ? "+aabb" : string.Empty);
 
     /// <inheritdoc/>
-    public Op Ops => Op.All | Op.FindCellScene;
+    public Op Ops => Op.All | Op.FindCellScene | Op.FindCellTransition;
+
+    /// <inheritdoc/>
+    public OutdoorFidelity Outdoor => outdoor;
 
     /// <summary>Gets or initializes the indoor fidelity used by scene queries (retail by default).</summary>
     public IndoorFidelity Indoor { get; init; }
@@ -75,16 +78,30 @@ public sealed class ReferenceAdapter(PickPolicy pick = PickPolicy.Retail, PartsF
     {
         var array = scratch ??= new CellArray();
         var containing = CellQuery.FindCellListOutdoor(array, cell, [.. spheres], current, pick, OpenLand.Instance, outdoor);
-        return new FindCellResult(array.ToIdArray(), containing);
+        return new FindCellResult(array.ToIdArray(), containing) { Loaded = LoadedFlags(array), HitsInteriorCell = false };
     }
 
     /// <inheritdoc/>
-    public FindCellResult FindCell(Scene? scene, CellId cell, IReadOnlyList<Sphere> spheres, CellId current)
+    public FindCellResult FindCell(Scene? scene, CellId cell, IReadOnlyList<Sphere> spheres, CellId current) => FindCell(scene, cell, spheres, current, false);
+
+    /// <inheritdoc/>
+    public FindCellResult FindCell(Scene? scene, CellId cell, IReadOnlyList<Sphere> spheres, CellId current, bool loadCells)
     {
         var array = scratch ??= new CellArray();
         var built = scene is null ? CellScene.Open : SceneBuild.Build(scene, Volumes);
-        var result = SceneQuery.FindCellList(array, built, cell, [.. spheres], current, new CellQueryOptions(pick, true, false, Indoor));
-        return new FindCellResult(array.ToIdArray(), result.Containing) { HitsInteriorCell = result.HitsInteriorCell };
+        var result = SceneQuery.FindCellList(array, built, cell, [.. spheres], current, new CellQueryOptions(pick, true, loadCells, Indoor));
+        return new FindCellResult(array.ToIdArray(), result.Containing) { HitsInteriorCell = result.HitsInteriorCell, Loaded = LoadedFlags(array) };
+    }
+
+    private static bool[] LoadedFlags(CellArray array)
+    {
+        var flags = new bool[array.Count];
+        for (int i = 0; i < flags.Length; i++)
+        {
+            flags[i] = array[i].Loaded;
+        }
+
+        return flags;
     }
 
     /// <inheritdoc/>

@@ -14,8 +14,9 @@ public static class SceneWalkRunner
     /// <summary>Runs the walk.</summary>
     /// <param name="impl">The implementation.</param>
     /// <param name="sw">The scene walk.</param>
+    /// <param name="loadCells">True to ask each step as a movement transition (no visibility filter, facts §6.14); the implementation must offer <see cref="Op.FindCellTransition"/>.</param>
     /// <returns>One record for the start query and one per step.</returns>
-    public static IReadOnlyList<WalkStep> Run(ICellPhysics impl, SceneWalk sw)
+    public static IReadOnlyList<WalkStep> Run(ICellPhysics impl, SceneWalk sw, bool loadCells = false)
     {
         var walk = sw.Walk;
         var steps = new List<WalkStep>(walk.Steps.Count + 1);
@@ -32,7 +33,7 @@ public static class SceneWalkRunner
 
             double worldX = (192.0 * frame.BlockX) + position.X, worldY = (192.0 * frame.BlockY) + position.Y;
             var query = new OutdoorCase(frame, walk.SpheresAt(position));
-            var answer = impl.FindCell(sw.Scene, frame, query.Spheres, current);
+            var answer = impl.FindCell(sw.Scene, frame, query.Spheres, current, loadCells);
             var before = position;
             if (!answer.Containing.IsNone)
             {
@@ -41,7 +42,7 @@ public static class SceneWalkRunner
                 current = answer.Containing;
             }
 
-            steps.Add(new WalkStep(i, query.Cell, before, worldX, worldY, query, answer.Cells, answer.Containing, current));
+            steps.Add(new WalkStep(i, query.Cell, before, worldX, worldY, query, answer.Cells, answer.Containing, current) { Answer = answer, LoadCells = loadCells });
         }
 
         return steps;

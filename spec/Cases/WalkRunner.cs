@@ -14,7 +14,14 @@ namespace AcPhys.Spec.Cases;
 /// <param name="Cells">The candidate cells answered.</param>
 /// <param name="Containing">The containing cell answered (<see cref="CellId.None"/> when none).</param>
 /// <param name="Current">The current cell after the step (kept when the answer was none).</param>
-public sealed record WalkStep(int Index, CellId Frame, Vector3 Position, double WorldX, double WorldY, OutdoorCase Query, IReadOnlyList<CellId> Cells, CellId Containing, CellId Current);
+public sealed record WalkStep(int Index, CellId Frame, Vector3 Position, double WorldX, double WorldY, OutdoorCase Query, IReadOnlyList<CellId> Cells, CellId Containing, CellId Current)
+{
+    /// <summary>Gets the whole answer (load-hint flags and HitsInteriorCell as reported), or null for records made by hand.</summary>
+    public FindCellResult? Answer { get; init; }
+
+    /// <summary>Gets a value indicating whether the step was asked as a movement transition (LoadCells true: no visibility filter).</summary>
+    public bool LoadCells { get; init; }
+}
 
 /// <summary>
 /// Runs a walk against an implementation as a client does: the current cell is threaded through find_cell step by
@@ -54,7 +61,7 @@ public static class WalkRunner
                 current = answer.Containing;
             }
 
-            steps.Add(new WalkStep(i, query.Cell, before, worldX, worldY, query, answer.Cells, answer.Containing, current));
+            steps.Add(new WalkStep(i, query.Cell, before, worldX, worldY, query, answer.Cells, answer.Containing, current) { Answer = answer });
         }
 
         return steps;

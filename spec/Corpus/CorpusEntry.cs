@@ -50,6 +50,7 @@ public sealed record CorpusEntry
     /// <returns>The entry, or null.</returns>
     public static CorpusEntry? From(object? c, string title, string? invariant, string foundBy, string? seed = null) => c switch
     {
+        AnyWalk any => From(any.Inner, title, invariant, foundBy, seed),
         LandCase land => new CorpusEntry { Title = title, Invariant = invariant, FoundBy = foundBy, Seed = seed, Case = land },
         Walk walk => new CorpusEntry { Title = title, Invariant = invariant, FoundBy = foundBy, Seed = seed, Walk = walk },
         SceneWalk sw => new CorpusEntry { Title = title, Invariant = invariant, FoundBy = foundBy, Seed = seed, SceneWalk = sw },

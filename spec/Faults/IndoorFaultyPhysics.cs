@@ -17,7 +17,7 @@ internal sealed class IndoorFaultyPhysics(PlantedFault fault) : ICellPhysics
 
     public string Name => "reference+" + fault.Id;
 
-    public Op Ops => Op.FindCellScene;
+    public Op Ops => Op.All | Op.FindCellScene;
 
     public PickPolicy Pick => fault == IndoorFaults.NoHysteresisIndoor ? PickPolicy.CurrentFirst : PickPolicy.Retail;
 

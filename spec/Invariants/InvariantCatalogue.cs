@@ -8,7 +8,7 @@ namespace AcPhys.Spec.Invariants;
 public static class InvariantCatalogue
 {
     /// <summary>Gets every invariant, in catalogue order.</summary>
-    public static IReadOnlyList<Invariant> All { get; } = [.. LandInvariants.All, .. OutdoorInvariants.All, .. WalkInvariants.All, .. PartsInvariants.All, .. IndoorInvariants.All];
+    public static IReadOnlyList<Invariant> All { get; } = [.. LandInvariants.All, .. OutdoorInvariants.All, .. WalkInvariants.All, .. PartsInvariants.All, .. IndoorInvariants.All, .. ConformanceInvariants.All];
 
     /// <summary>Gets the invariants over <see cref="LandCase"/>.</summary>
     public static IReadOnlyList<Invariant<LandCase>> Land => LandInvariants.All;
@@ -24,7 +24,7 @@ public static class InvariantCatalogue
     /// <returns>The first violation in catalogue order, or null when all hold.</returns>
     public static Violation? CheckLandCase(ICellPhysics impl, LandCase c)
     {
-        foreach (var invariant in Land)
+        foreach (var invariant in Land.Append(ConformanceInvariants.LandDefs))
         {
             if (!invariant.IsTestable(impl))
             {
@@ -60,7 +60,7 @@ public static class InvariantCatalogue
 
         foreach (var step in WalkRunner.Run(ReferenceAdapter.Instance, walk))
         {
-            foreach (var invariant in OutdoorInvariants.All)
+            foreach (var invariant in OutdoorInvariants.All.Append(ConformanceInvariants.OutsideCells))
             {
                 if (invariant.IsTestable(impl) && invariant.Check(impl, step.Query) is { IsViolation: true } o)
                 {
@@ -69,7 +69,7 @@ public static class InvariantCatalogue
             }
         }
 
-        return null;
+        return CheckConformance(impl, new AnyWalk(walk, null));
     }
 
     /// <summary>Checks a corpus entry of any kind.</summary>
@@ -110,6 +110,14 @@ public static class InvariantCatalogue
             }
         }
 
-        return null;
+        return CheckConformance(impl, new AnyWalk(null, sw));
+    }
+
+    private static Violation? CheckConformance(ICellPhysics impl, AnyWalk w)
+    {
+        var invariant = ConformanceInvariants.FindCell;
+        return invariant.IsTestable(impl) && invariant.Check(impl, w) is { IsViolation: true } o
+            ? new Violation(invariant.Id, o.Message ?? "violated", w.ToString()) { Case = w.Inner }
+            : null;
     }
 }

@@ -40,6 +40,12 @@ public sealed class ProcessAdapter : ICellPhysics, IDisposable
     /// <inheritdoc/>
     public PickPolicy Pick { get; }
 
+    /// <inheritdoc/>
+    public IndoorFidelity Indoor { get; private init; }
+
+    /// <inheritdoc/>
+    public OutdoorFidelity Outdoor { get; private init; }
+
     /// <summary>Gets op names the implementation announced that protocol v1 does not know (ignored).</summary>
     public IReadOnlyList<string> UnknownOps { get; }
 
@@ -94,7 +100,19 @@ public sealed class ProcessAdapter : ICellPhysics, IDisposable
                     throw new WireException($"unknown pick \"{pickName}\" (known: retail, current-first)");
                 }
 
-                return new ProcessAdapter(child, options.Timeout, name, ops, pick, unknown);
+                var declared = hello.TryGetProperty("fidelity", out var fid) && fid.ValueKind != JsonValueKind.Null ? fid : default;
+                if (declared.ValueKind != JsonValueKind.Undefined && (declared.ValueKind != JsonValueKind.Array || declared.EnumerateArray().Any(e => e.ValueKind != JsonValueKind.String)))
+                {
+                    throw new WireException("field \"fidelity\" must be an array of deviation names");
+                }
+
+                var names = declared.ValueKind == JsonValueKind.Array ? declared.EnumerateArray().Select(e => e.GetString()!).ToArray() : [];
+                if (!FidelityNames.TryParse(names, out var indoor, out var outdoor, out var bad))
+                {
+                    throw new WireException($"unknown fidelity \"{Wire.Brief(bad!, 60)}\" (known: {string.Join(", ", FidelityNames.Known)})");
+                }
+
+                return new ProcessAdapter(child, options.Timeout, name, ops, pick, unknown) { Indoor = indoor, Outdoor = outdoor };
             }
             catch (WireException e)
             {
@@ -177,6 +195,22 @@ public sealed class ProcessAdapter : ICellPhysics, IDisposable
             ? FindCell(cell, spheres, current)
             : Call(Op.FindCellScene, "find_cell", w => FindCellFields(w, scene, cell, spheres, current), ReadFindCell);
 
+    /// <summary><c>find_cell</c> with <c>"load_cells": true</c> (a movement transition, no visibility filter), for an implementation that announced <c>find_cell_transition</c>.</summary>
+    /// <param name="scene">The scene, or null for open land.</param>
+    /// <param name="cell">The position's cell.</param>
+    /// <param name="spheres">Centres in <paramref name="cell"/>'s block frame.</param>
+    /// <param name="current">The current cell, or <see cref="CellId.None"/>.</param>
+    /// <param name="loadCells">True for a transition query.</param>
+    /// <returns>The candidates and the containing cell.</returns>
+    public FindCellResult FindCell(Scene? scene, CellId cell, IReadOnlyList<Sphere> spheres, CellId current, bool loadCells) =>
+        !loadCells
+            ? FindCell(scene, cell, spheres, current)
+            : Call(Op.FindCellTransition, "find_cell", w =>
+            {
+                FindCellFields(w, scene, cell, spheres, current);
+                w.WriteBoolean("load_cells", true);
+            }, ReadFindCell);
+
     private static void FindCellFields(Utf8JsonWriter w, Scene? scene, CellId cell, IReadOnlyList<Sphere> spheres, CellId current)
     {
         if (scene is null)
@@ -201,7 +235,7 @@ public sealed class ProcessAdapter : ICellPhysics, IDisposable
         }
     }
 
-    private static FindCellResult ReadFindCell(JsonElement a) => new(Wire.ReadCells(a, "cells"), Wire.ReadOptionalCell(a, "containing"));
+    private static FindCellResult ReadFindCell(JsonElement a) => Wire.ReadFindCell(a);
 
     /// <inheritdoc/>
     public IReadOnlyList<CellId> OutsideCellsParts(IReadOnlyList<Part> parts) => Call(

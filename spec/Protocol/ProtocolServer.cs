@@ -156,19 +156,14 @@ public sealed class ProtocolServer(ICellPhysics impl)
                         return Error($"op \"find_cell\" on open land not offered by {impl.Name}");
                     }
 
-                    var r = impl.FindCell(scene, Wire.ReadCell(request, "cell"), Wire.ReadSpheres(request, "spheres"), Wire.ReadOptionalCell(request, "current"));
-                    return Wire.Line(w =>
+                    bool loadCells = request.TryGetProperty("load_cells", out _) && Wire.ReadBool(request, "load_cells");
+                    if (loadCells && (impl.Ops & Op.FindCellTransition) == 0)
                     {
-                        Wire.WriteCells(w, "cells", r.Cells);
-                        if (r.Containing.IsNone)
-                        {
-                            w.WriteNull("containing");
-                        }
-                        else
-                        {
-                            Wire.WriteCell(w, "containing", r.Containing);
-                        }
-                    });
+                        return Error($"transition queries (load_cells) not served by {impl.Name} (it does not offer find_cell_transition)");
+                    }
+
+                    var r = impl.FindCell(scene, Wire.ReadCell(request, "cell"), Wire.ReadSpheres(request, "spheres"), Wire.ReadOptionalCell(request, "current"), loadCells);
+                    return Wire.Line(w => Wire.WriteFindCell(w, r));
                 }
 
             case Op.OutsideCellsParts:
@@ -221,6 +216,17 @@ public sealed class ProtocolServer(ICellPhysics impl)
 
             w.WriteEndArray();
             w.WriteString("pick", PickNames.Of(impl.Pick));
+            var fidelity = FidelityNames.Names(impl.Indoor, impl.Outdoor);
+            if (fidelity.Count > 0)
+            {
+                w.WriteStartArray("fidelity");
+                foreach (var name in fidelity)
+                {
+                    w.WriteStringValue(name);
+                }
+
+                w.WriteEndArray();
+            }
         });
     }
 

@@ -117,6 +117,67 @@ public static class Wire
         w.WriteEndArray();
     }
 
+    /// <summary>
+    /// Writes a find_cell answer: <c>cells</c>, <c>containing</c> (null for none) and, when reported, the optional
+    /// <c>loaded</c> (one boolean per cell; false = a load hint) and <c>hits_interior_cell</c>.
+    /// </summary>
+    /// <param name="w">The writer.</param>
+    /// <param name="r">The answer.</param>
+    public static void WriteFindCell(Utf8JsonWriter w, Adapters.FindCellResult r)
+    {
+        WriteCells(w, "cells", r.Cells);
+        if (r.Containing.IsNone)
+        {
+            w.WriteNull("containing");
+        }
+        else
+        {
+            WriteCell(w, "containing", r.Containing);
+        }
+
+        if (r.Loaded is { } loaded)
+        {
+            w.WriteStartArray("loaded");
+            foreach (bool b in loaded)
+            {
+                w.WriteBooleanValue(b);
+            }
+
+            w.WriteEndArray();
+        }
+
+        if (r.HitsInteriorCell is bool hits)
+        {
+            w.WriteBoolean("hits_interior_cell", hits);
+        }
+    }
+
+    /// <summary>Reads a find_cell answer (see <see cref="WriteFindCell"/>); the optional fields stay null when absent.</summary>
+    /// <param name="a">The answer object.</param>
+    /// <returns>The answer.</returns>
+    /// <exception cref="WireException">A field is malformed, or <c>loaded</c> is not parallel to <c>cells</c>.</exception>
+    public static Adapters.FindCellResult ReadFindCell(JsonElement a)
+    {
+        var cells = ReadCells(a, "cells");
+        bool[]? loaded = null;
+        if (a.TryGetProperty("loaded", out var flags) && flags.ValueKind != JsonValueKind.Null)
+        {
+            if (flags.ValueKind != JsonValueKind.Array || flags.EnumerateArray().Any(e => e.ValueKind is not (JsonValueKind.True or JsonValueKind.False)))
+            {
+                throw new WireException("field \"loaded\" must be an array of booleans");
+            }
+
+            loaded = [.. flags.EnumerateArray().Select(e => e.GetBoolean())];
+            if (loaded.Length != cells.Length)
+            {
+                throw new WireException($"field \"loaded\" has {loaded.Length} entries for {cells.Length} cells");
+            }
+        }
+
+        bool? hits = a.TryGetProperty("hits_interior_cell", out var h) && h.ValueKind != JsonValueKind.Null ? ReadBool(a, "hits_interior_cell") : null;
+        return new Adapters.FindCellResult(cells, ReadOptionalCell(a, "containing")) { Loaded = loaded, HitsInteriorCell = hits };
+    }
+
     /// <summary>Writes spheres as <c>[{x,y,z,r}]</c>.</summary>
     /// <param name="w">The writer.</param>
     /// <param name="name">The property name.</param>
