@@ -57,7 +57,7 @@ public sealed class WireTests
         Assert.StartsWith("{\"error\":\"unknown op", server.Answer("{\"op\":\"teleport\"}"), StringComparison.Ordinal);
         Assert.StartsWith("{\"error\":\"malformed request: not JSON", server.Answer("hello"), StringComparison.Ordinal);
         using var hello = JsonDocument.Parse(server.Answer("{\"op\":\"hello\",\"protocol\":1}"));
-        Assert.Equal(10, hello.RootElement.GetProperty("ops").GetArrayLength());
+        Assert.Equal(11, hello.RootElement.GetProperty("ops").GetArrayLength()); // protocol v1 with find_cell_scene and find_cell_transition
         Assert.StartsWith("{\"error\":\"protocol 2 not supported", server.Answer("{\"op\":\"hello\",\"protocol\":2}"), StringComparison.Ordinal);
     }
 
@@ -93,5 +93,71 @@ public sealed class WireTests
         }
 
         Assert.True(indoors >= 2, $"only {indoors} of the points were indoors; the test would not see a scene being ignored");
+    }
+    [Fact]
+    public void FindCellAnswersCarryLoadHintFlagsAndHitsInteriorCellAndTransitionQueriesSkipTheFilter()
+    {
+        // Protocol v1, compatible extension: "loaded" parallel to "cells", "hits_interior_cell", and "load_cells": true
+        // for a movement transition (no visibility filter), served by an implementation announcing find_cell_transition.
+        var plan = new CottagePlan((0xA9 * 192.0) + 50, (0xB4 * 192.0) + 50, 0f, 1, 6f, 6f, 0, false, false);
+        var scene = SceneKit.Cottage(plan);
+        var server = new ProtocolServer(ReferenceAdapter.Instance);
+        var room = plan.RoomId(0);
+        var spheres = new[] { new Sphere(plan.ToBlock(new Vector3(3, 0.2f, 0.6f)), 0.5f) };
+        string Request(bool transition) => Wire.Line(w =>
+        {
+            w.WriteString("op", "find_cell");
+            w.WritePropertyName("scene");
+            w.WriteRawValue(SceneJson.WriteCompact(scene));
+            Wire.WriteCell(w, "cell", room);
+            Wire.WriteSpheres(w, "spheres", spheres);
+            w.WriteNull("current");
+            if (transition)
+            {
+                w.WriteBoolean("load_cells", true);
+            }
+        });
+        foreach (bool transition in new[] { false, true })
+        {
+            using var answer = Wire.Parse(server.Answer(Request(transition)));
+            var got = Wire.ReadFindCell(answer.RootElement);
+            var expected = ReferenceAdapter.Instance.FindCell(scene, room, spheres, CellId.None, transition);
+            Assert.Equal(expected.Cells, got.Cells);
+            Assert.Equal(expected.Loaded, got.Loaded);
+            Assert.True(got.HitsInteriorCell);
+            Assert.Equal(transition, got.Cells.Any(c => c.IsLand)); // the exit's land cells survive only without the filter
+        }
+
+        Assert.Contains("\"loaded\":[true", server.Answer("{\"op\":\"find_cell\",\"scene\":null,\"cell\":\"0xA9B40001\",\"spheres\":[{\"x\":1,\"y\":1,\"z\":0,\"r\":0.5}],\"current\":null}"), StringComparison.Ordinal);
+    }
+
+    [Fact]
+    public void MalformedFlagsAreProtocolErrorsAndAbsentFlagsStayUnreported()
+    {
+        using var mismatch = Wire.Parse("{\"cells\":[\"0xA9B40001\"],\"containing\":null,\"loaded\":[true,false]}");
+        Assert.Contains("has 2 entries for 1 cells", Assert.Throws<WireException>(() => Wire.ReadFindCell(mismatch.RootElement)).Message, StringComparison.Ordinal);
+        using var notBool = Wire.Parse("{\"cells\":[\"0xA9B40001\"],\"containing\":null,\"loaded\":[1]}");
+        Assert.Throws<WireException>(() => Wire.ReadFindCell(notBool.RootElement));
+        using var plain = Wire.Parse("{\"cells\":[\"0xA9B40001\"],\"containing\":\"0xA9B40001\"}");
+        var r = Wire.ReadFindCell(plain.RootElement);
+        Assert.Null(r.Loaded);
+        Assert.Null(r.HitsInteriorCell);
+    }
+
+    [Fact]
+    public void HelloDeclaresTheDocumentedDeviationsAndUnknownNamesAreRefused()
+    {
+        var ace = new ReferenceAdapter(PickPolicy.Retail, outdoor: OutdoorFidelity.Ace) { Indoor = IndoorFidelity.Ace };
+        using var hello = JsonDocument.Parse(new ProtocolServer(ace).Answer("{\"op\":\"hello\",\"protocol\":1}"));
+        var names = hello.RootElement.GetProperty("fidelity").EnumerateArray().Select(e => e.GetString()!).ToArray();
+        Assert.True(FidelityNames.TryParse(names, out var indoor, out var outdoor, out _));
+        Assert.Equal(IndoorFidelity.Ace, indoor);
+        Assert.Equal(OutdoorFidelity.Ace, outdoor);
+        using var retail = JsonDocument.Parse(new ProtocolServer(ReferenceAdapter.Instance).Answer("{\"op\":\"hello\",\"protocol\":1}"));
+        Assert.False(retail.RootElement.TryGetProperty("fidelity", out _)); // retail says nothing
+        Assert.False(FidelityNames.TryParse(["ace", "teleport-fix"], out _, out _, out var bad));
+        Assert.Equal("teleport-fix", bad);
+        Assert.True(FidelityNames.TryParse(["double"], out _, out var d, out _));
+        Assert.Equal(OutdoorPrecision.Double, d.Precision);
     }
 }

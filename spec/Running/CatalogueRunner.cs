@@ -75,7 +75,7 @@ public static class CatalogueRunner
                 if (failing)
                 {
                     timeToFailure = stopwatch.Elapsed;
-                    firstSeen = new Violation(invariant.Id, outcome.Message ?? "violated", c?.ToString() ?? string.Empty) { Case = c };
+                    firstSeen = new Violation(invariant.Id, outcome.Message ?? "violated", c?.ToString() ?? string.Empty) { Case = Stored(c) };
                 }
             }
 
@@ -194,6 +194,9 @@ public static class CatalogueRunner
     private static Violation? ViolationOf<TCase>(Invariant<TCase> invariant, ICellPhysics impl, TCase c)
     {
         var outcome = invariant.Check(impl, c);
-        return outcome.IsViolation ? new Violation(invariant.Id, outcome.Message ?? "violated", c?.ToString() ?? string.Empty) { Case = c } : null;
+        return outcome.IsViolation ? new Violation(invariant.Id, outcome.Message ?? "violated", c?.ToString() ?? string.Empty) { Case = Stored(c) } : null;
     }
+
+    // The case as reports and corpus files hold it: a walk of either kind is stored as the walk itself.
+    private static object? Stored(object? c) => c is AnyWalk any ? any.Inner : c;
 }

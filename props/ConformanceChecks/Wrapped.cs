@@ -1,0 +1,45 @@
+using AcPhys.Core;
+using AcPhys.Spec.Adapters;
+using AcPhys.Spec.Scenes;
+
+namespace AcPhys.Props.ConformanceChecks;
+
+/// <summary>An adapter that forwards everything to another; tests override the one behaviour they change.</summary>
+/// <param name="inner">The adapter forwarded to.</param>
+internal abstract class Wrapped(ICellPhysics inner) : ICellPhysics
+{
+    public string Name => "wrapped " + Inner.Name;
+
+    public Op Ops => Inner.Ops;
+
+    public virtual PickPolicy Pick => Inner.Pick;
+
+    public virtual IndoorFidelity Indoor => Inner.Indoor;
+
+    public virtual OutdoorFidelity Outdoor => Inner.Outdoor;
+
+    protected ICellPhysics Inner { get; } = inner;
+
+    public bool BlockIdToLcoord(CellId id, out Lcoord lcoord) => Inner.BlockIdToLcoord(id, out lcoord);
+
+    public bool GidToLcoord(CellId id, out Lcoord lcoord) => Inner.GidToLcoord(id, out lcoord);
+
+    public CellId LcoordToGid(int x, int y) => Inner.LcoordToGid(x, y);
+
+    public bool InboundValidCellId(CellId id) => Inner.InboundValidCellId(id);
+
+    public bool GetOutsideLcoord(CellId id, float x, float y, out Lcoord lcoord) => Inner.GetOutsideLcoord(id, x, y, out lcoord);
+
+    public AdjustResult AdjustToOutside(CellId id, float x, float y) => Inner.AdjustToOutside(id, x, y);
+
+    public IReadOnlyList<CellId> OutsideCells(CellId cell, IReadOnlyList<Sphere> spheres) => Inner.OutsideCells(cell, spheres);
+
+    public FindCellResult FindCell(CellId cell, IReadOnlyList<Sphere> spheres, CellId current) => Inner.FindCell(cell, spheres, current);
+
+    public IReadOnlyList<CellId> OutsideCellsParts(IReadOnlyList<Part> parts) => Inner.OutsideCellsParts(parts);
+
+    public FindCellResult FindCell(Scene? scene, CellId cell, IReadOnlyList<Sphere> spheres, CellId current) => FindCell(scene, cell, spheres, current, false);
+
+    public virtual FindCellResult FindCell(Scene? scene, CellId cell, IReadOnlyList<Sphere> spheres, CellId current, bool loadCells) =>
+        Inner.FindCell(scene, cell, spheres, current, loadCells);
+}
