@@ -21,6 +21,16 @@ public sealed class OutOfProcessTests
     }
 
     [Fact]
+    public void ScenesTravelWholeToAServerWithoutLoadScene()
+    {
+        // Compatibility: a server that does not announce load_scene is sent the scene in every find_cell, as before.
+        var run = Acphys.Run(["verify", "--impl-cmd", Acphys.ServeCommand + " --no-load-scene", "--only", "INTERIOR-WINS,FIND-CELL-CONFORMANCE", "--cases", "100", "--timeout", "60"]);
+        Assert.True(run.Exit == 0, run.ToString());
+        Assert.Contains("verify: 2 invariants, 2 passed, 0 failed, 0 not tested", run.Out, StringComparison.Ordinal);
+        Assert.DoesNotContain("load_scene", run.Out, StringComparison.Ordinal);
+    }
+
+    [Fact]
     public void ServedIndoorFaultIsCaughtThroughScenesOnTheWire()
     {
         // outdoor-wins (the pick prefers the land cell) is only visible with a scene: it must cross the protocol.

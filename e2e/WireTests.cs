@@ -57,7 +57,7 @@ public sealed class WireTests
         Assert.StartsWith("{\"error\":\"unknown op", server.Answer("{\"op\":\"teleport\"}"), StringComparison.Ordinal);
         Assert.StartsWith("{\"error\":\"malformed request: not JSON", server.Answer("hello"), StringComparison.Ordinal);
         using var hello = JsonDocument.Parse(server.Answer("{\"op\":\"hello\",\"protocol\":1}"));
-        Assert.Equal(11, hello.RootElement.GetProperty("ops").GetArrayLength()); // protocol v1 with find_cell_scene and find_cell_transition
+        Assert.Equal(12, hello.RootElement.GetProperty("ops").GetArrayLength()); // protocol v1 with find_cell_scene, find_cell_transition and load_scene
         Assert.StartsWith("{\"error\":\"protocol 2 not supported", server.Answer("{\"op\":\"hello\",\"protocol\":2}"), StringComparison.Ordinal);
     }
 
@@ -159,5 +159,60 @@ public sealed class WireTests
         Assert.Equal("teleport-fix", bad);
         Assert.True(FidelityNames.TryParse(["double"], out _, out var d, out _));
         Assert.Equal(OutdoorPrecision.Double, d.Precision);
+    }
+    [Fact]
+    public void ALoadedSceneIsNamedByItsIdUntilUnloaded()
+    {
+        var plan = new CottagePlan((0xA9 * 192.0) + 50, (0xB4 * 192.0) + 50, 0.3f, 2, 6f, 6f, 0, true, false);
+        var scene = SceneKit.Cottage(plan);
+        var server = new ProtocolServer(ReferenceAdapter.Instance);
+        using var hello = JsonDocument.Parse(server.Answer("{\"op\":\"hello\",\"protocol\":1}"));
+        Assert.Contains(hello.RootElement.GetProperty("ops").EnumerateArray(), e => e.GetString() == "load_scene");
+        using var loaded = Wire.Parse(server.Answer(Wire.Line(w =>
+        {
+            w.WriteString("op", "load_scene");
+            w.WritePropertyName("scene");
+            w.WriteRawValue(SceneJson.WriteCompact(scene));
+        })));
+        string id = Wire.ReadString(loaded.RootElement, "scene_id");
+        var spheres = new[] { new Sphere(plan.ToBlock(new Vector3(3, 3, 0.6f)), 0.5f) };
+        string ById() => server.Answer(Wire.Line(w =>
+        {
+            w.WriteString("op", "find_cell");
+            w.WriteString("scene_id", id);
+            Wire.WriteCell(w, "cell", plan.RoomId(0));
+            Wire.WriteSpheres(w, "spheres", spheres);
+            w.WriteNull("current");
+        }));
+        using (var answer = Wire.Parse(ById()))
+        {
+            var expected = ReferenceAdapter.Instance.FindCell(scene, plan.RoomId(0), spheres, CellId.None);
+            Assert.Equal(expected.Cells, Wire.ReadFindCell(answer.RootElement).Cells);
+        }
+
+        Assert.Equal("{\"ok\":true}", server.Answer($"{{\"op\":\"unload_scene\",\"scene_id\":\"{id}\"}}"));
+        Assert.StartsWith("{\"error\":\"unknown scene_id", ById(), StringComparison.Ordinal);
+        Assert.StartsWith("{\"error\":\"unknown scene_id", server.Answer($"{{\"op\":\"unload_scene\",\"scene_id\":\"{id}\"}}"), StringComparison.Ordinal);
+        var older = new ProtocolServer(ReferenceAdapter.Instance) { LoadScenes = false };
+        using var plain = JsonDocument.Parse(older.Answer("{\"op\":\"hello\",\"protocol\":1}"));
+        Assert.DoesNotContain(plain.RootElement.GetProperty("ops").EnumerateArray(), e => e.GetString() == "load_scene");
+    }
+
+    [Fact]
+    public void AClientHoldsAtMostTheServersLimitOfScenes()
+    {
+        var server = new ProtocolServer(ReferenceAdapter.Instance);
+        string Load(int i) => server.Answer(Wire.Line(w =>
+        {
+            w.WriteString("op", "load_scene");
+            w.WritePropertyName("scene");
+            w.WriteRawValue(SceneJson.WriteCompact(SceneKit.Cottage(new CottagePlan((0xA9 * 192.0) + 20 + i, (0xB4 * 192.0) + 50, 0, 1, 6f, 6f, 0, false, false))));
+        }));
+        for (int i = 0; i < ProtocolServer.MaxLoadedScenes; i++)
+        {
+            Assert.StartsWith("{\"scene_id\":", Load(i), StringComparison.Ordinal);
+        }
+
+        Assert.StartsWith("{\"error\":\"64 scenes already loaded", Load(99), StringComparison.Ordinal);
     }
 }

@@ -32,12 +32,13 @@ internal static class ServeCommand
             Description = "Serve the reference with these documented deviations, declared in hello (comma-separated: ace, double, ace-early-return, ...; docs/protocol.md).",
             HelpName = "NAMES",
         };
-        var command = new Command("serve", "Serve the reference core over protocol v1 on stdin/stdout (docs/protocol.md); ends at end of input.") { fault, pick, fidelity };
-        command.SetAction(parse => Guard.Run("serve", () => Run(parse.GetValue(fault), parse.GetValue(pick), parse.GetValue(fidelity))));
+        var noLoad = new Option<bool>("--no-load-scene") { Description = "Do not announce load_scene: every find_cell carries its whole scene (as a server without it)." };
+        var command = new Command("serve", "Serve the reference core over protocol v1 on stdin/stdout (docs/protocol.md); ends at end of input.") { fault, pick, fidelity, noLoad };
+        command.SetAction(parse => Guard.Run("serve", () => Run(parse.GetValue(fault), parse.GetValue(pick), parse.GetValue(fidelity), parse.GetValue(noLoad))));
         return command;
     }
 
-    private static int Run(string? faultId, string? pickName, string? fidelityNames)
+    private static int Run(string? faultId, string? pickName, string? fidelityNames, bool noLoadScene)
     {
         if (!PickNames.TryParse(pickName, out var pick))
         {
@@ -64,7 +65,7 @@ internal static class ServeCommand
         var utf8 = new UTF8Encoding(false);
         using var input = new StreamReader(Console.OpenStandardInput(), utf8);
         using var output = new StreamWriter(Console.OpenStandardOutput(), utf8) { NewLine = "\n" };
-        new ProtocolServer(impl).Serve(input, output);
+        new ProtocolServer(impl) { LoadScenes = !noLoadScene }.Serve(input, output);
         return ExitCodes.Ok;
     }
 }

@@ -40,6 +40,12 @@ public enum Op
     /// <summary><c>find_cell_transition</c>: find_cell_scene as a movement transition asks it (no visibility filter); an optional extension of protocol v1.</summary>
     FindCellTransition = 1 << 10,
 
+    /// <summary>
+    /// <c>load_scene</c> / <c>unload_scene</c>: a transport capability, not an operation invariants need — the scene is
+    /// sent once and <c>find_cell</c> names it by <c>scene_id</c> (docs/protocol.md, "Loading a scene once").
+    /// </summary>
+    LoadScene = 1 << 11,
+
     /// <summary>Every LandDefs operation.</summary>
     LandDefs = BlockIdToLcoord | GidToLcoord | LcoordToGid | InboundValidCellId | GetOutsideLcoord | AdjustToOutside,
 
@@ -66,6 +72,7 @@ public static class OpNames
         (Op.OutsideCellsParts, "outside_cells_parts"),
         (Op.FindCellScene, "find_cell_scene"),
         (Op.FindCellTransition, "find_cell_transition"),
+        (Op.LoadScene, "load_scene"),
     ];
 
     /// <summary>Returns the protocol names of every flag set in <paramref name="ops"/>.</summary>

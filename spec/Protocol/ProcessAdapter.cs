@@ -16,7 +16,9 @@ public sealed class ProcessAdapter : ICellPhysics, IDisposable
 {
     private readonly LineProcess child;
     private readonly TimeSpan timeout;
+    private const int KeptScenes = 8;
     private readonly Lock gate = new();
+    private readonly List<(Scene Scene, string Id)> loaded = [];
 
     // Scenes are immutable records: serialise each once, however many steps of a walk query it.
     private static readonly ConditionalWeakTable<Scene, string> CompactScenes = [];
@@ -211,11 +213,15 @@ public sealed class ProcessAdapter : ICellPhysics, IDisposable
                 w.WriteBoolean("load_cells", true);
             }, ReadFindCell);
 
-    private static void FindCellFields(Utf8JsonWriter w, Scene? scene, CellId cell, IReadOnlyList<Sphere> spheres, CellId current)
+    private void FindCellFields(Utf8JsonWriter w, Scene? scene, CellId cell, IReadOnlyList<Sphere> spheres, CellId current)
     {
         if (scene is null)
         {
             w.WriteNull("scene");
+        }
+        else if ((Ops & Op.LoadScene) != 0)
+        {
+            w.WriteString("scene_id", SceneId(scene));
         }
         else
         {
@@ -236,6 +242,42 @@ public sealed class ProcessAdapter : ICellPhysics, IDisposable
     }
 
     private static FindCellResult ReadFindCell(JsonElement a) => Wire.ReadFindCell(a);
+
+    // load_scene once per scene: the most recent few stay loaded (a walk, its translated copy, a shrink step's
+    // neighbours), the oldest is unloaded to make room.
+    private string SceneId(Scene scene)
+    {
+        lock (loaded)
+        {
+            int at = loaded.FindIndex(e => ReferenceEquals(e.Scene, scene));
+            if (at >= 0)
+            {
+                var hit = loaded[at];
+                loaded.RemoveAt(at);
+                loaded.Add(hit);
+                return hit.Id;
+            }
+
+            if (loaded.Count == KeptScenes)
+            {
+                string old = loaded[0].Id;
+                loaded.RemoveAt(0);
+                Call(Op.LoadScene, "unload_scene", w => w.WriteString("scene_id", old), a => Wire.ReadBool(a, "ok"));
+            }
+
+            string id = Call(
+                Op.LoadScene,
+                "load_scene",
+                w =>
+                {
+                    w.WritePropertyName("scene");
+                    w.WriteRawValue(CompactScenes.GetValue(scene, SceneJson.WriteCompact), skipInputValidation: true);
+                },
+                a => Wire.ReadString(a, "scene_id"));
+            loaded.Add((scene, id));
+            return id;
+        }
+    }
 
     /// <inheritdoc/>
     public IReadOnlyList<CellId> OutsideCellsParts(IReadOnlyList<Part> parts) => Call(

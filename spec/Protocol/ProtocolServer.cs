@@ -12,10 +12,19 @@ namespace AcPhys.Spec.Protocol;
 /// <param name="impl">The implementation to serve.</param>
 public sealed class ProtocolServer(ICellPhysics impl)
 {
+    /// <summary>How many scenes a client may hold loaded at once (it unloads to make room).</summary>
+    public const int MaxLoadedScenes = 64;
+
+    private readonly Dictionary<string, Scene> loadedScenes = [];
+    private int nextSceneId;
+
     // The last scene read, by its exact text: a walk sends the same scene on every step, and reusing the instance
     // reuses its built core scene (SceneBuild caches per instance).
     // One reference, swapped whole, so concurrent Answer calls never see a text paired with another scene.
     private LastScene? last;
+
+    /// <summary>Gets or initializes a value indicating whether the server announces <c>load_scene</c> (true by default; false serves as an older server would).</summary>
+    public bool LoadScenes { get; init; } = true;
 
     /// <summary>Reads requests until end of input, answering each on its own line.</summary>
     /// <param name="input">Requests.</param>
@@ -69,6 +78,20 @@ public sealed class ProtocolServer(ICellPhysics impl)
         if (op == "hello")
         {
             return Hello(request);
+        }
+
+        switch (op)
+        {
+            case "load_scene":
+                return LoadScene(request);
+            case "unload_scene":
+                {
+                    string id = Wire.ReadString(request, "scene_id");
+                    lock (loadedScenes)
+                    {
+                        return loadedScenes.Remove(id) ? Wire.Line(w => w.WriteBoolean("ok", true)) : Error($"unknown scene_id \"{Wire.Brief(id, 40)}\"");
+                    }
+                }
         }
 
         var known = OpNames.Parse([op], out _);
@@ -140,9 +163,20 @@ public sealed class ProtocolServer(ICellPhysics impl)
 
             case Op.FindCell:
                 {
-                    var sceneField = Wire.Field(request, "scene");
                     Scene? scene = null;
-                    if (sceneField.ValueKind != JsonValueKind.Null)
+                    var sceneField = request.TryGetProperty("scene_id", out var sceneId) ? default : Wire.Field(request, "scene");
+                    if (sceneId.ValueKind != JsonValueKind.Undefined)
+                    {
+                        string id = Wire.ReadString(request, "scene_id");
+                        lock (loadedScenes)
+                        {
+                            if (!loadedScenes.TryGetValue(id, out scene))
+                            {
+                                return Error($"unknown scene_id \"{Wire.Brief(id, 40)}\" (load_scene first)");
+                            }
+                        }
+                    }
+                    else if (sceneField.ValueKind != JsonValueKind.Null)
                     {
                         if ((impl.Ops & Op.FindCellScene) == 0)
                         {
@@ -174,6 +208,27 @@ public sealed class ProtocolServer(ICellPhysics impl)
 
             default:
                 return Error($"unknown op \"{op}\"");
+        }
+    }
+
+    private string LoadScene(JsonElement request)
+    {
+        if ((impl.Ops & Op.FindCellScene) == 0)
+        {
+            return Error($"scenes not served by {impl.Name} (it does not offer find_cell_scene)");
+        }
+
+        var scene = ReadScene(Wire.Field(request, "scene"));
+        lock (loadedScenes)
+        {
+            if (loadedScenes.Count >= MaxLoadedScenes)
+            {
+                return Error($"{MaxLoadedScenes} scenes already loaded: unload_scene one first");
+            }
+
+            string id = "s" + (++nextSceneId).ToString(System.Globalization.CultureInfo.InvariantCulture);
+            loadedScenes[id] = scene;
+            return Wire.Line(w => w.WriteString("scene_id", id));
         }
     }
 
@@ -209,7 +264,13 @@ public sealed class ProtocolServer(ICellPhysics impl)
             w.WriteNumber("protocol", Wire.Version);
             w.WriteString("name", impl.Name);
             w.WriteStartArray("ops");
-            foreach (var name in OpNames.Names(impl.Ops))
+            var ops = impl.Ops & ~Op.LoadScene;
+            if (LoadScenes && (ops & Op.FindCellScene) != 0)
+            {
+                ops |= Op.LoadScene; // the server holds the scenes; the implementation behind it needs nothing for it
+            }
+
+            foreach (var name in OpNames.Names(ops))
             {
                 w.WriteStringValue(name);
             }
