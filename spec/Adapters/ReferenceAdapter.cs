@@ -76,6 +76,14 @@ public sealed class ReferenceAdapter(PickPolicy pick = PickPolicy.Retail, PartsF
     /// <inheritdoc/>
     public FindCellResult FindCell(CellId cell, IReadOnlyList<Sphere> spheres, CellId current)
     {
+        if (!cell.IsLand)
+        {
+            // An env cell or block id position is indoor by its low word (facts §1.1, §4 step 3): it is seeded as itself,
+            // and on open land no env cell is loaded, so there is no transit and no pick; id 0 has no visible cell.
+            // Only the full find_cell_list says so; the outdoor-only CellQuery would treat them as their outdoor column.
+            return FindCell(null, cell, spheres, current, false);
+        }
+
         var array = scratch ??= new CellArray();
         var containing = CellQuery.FindCellListOutdoor(array, cell, [.. spheres], current, pick, OpenLand.Instance, outdoor);
         return new FindCellResult(array.ToIdArray(), containing) { Loaded = LoadedFlags(array), HitsInteriorCell = false };
