@@ -37,9 +37,14 @@ internal static class BiteCommand
             Description = "Run only these catalogue bugs (comma-separated or repeated).",
             HelpName = "ID[,ID...]",
         };
+        var except = new Option<string[]>("--except")
+        {
+            Description = "Leave out these invariants (comma-separated or repeated), e.g. the conformance ones to see what the independent invariants catch.",
+            HelpName = "ID[,ID...]",
+        };
         var command = new Command("bite", "Prove the suite bites: run every known-bug catalogue entry against every invariant and report the matrix.")
         {
-            profile, seeds, markdown, json, bug,
+            profile, seeds, markdown, json, bug, except,
         };
         command.SetAction(parse => Guard.Run("bite", () => Run(
             parse.GetValue(profile) ?? DefaultProfile(),
@@ -47,6 +52,7 @@ internal static class BiteCommand
             parse.GetValue(markdown),
             parse.GetValue(json),
             parse.GetValue(bug) ?? [],
+            parse.GetValue(except) ?? [],
             Environment.GetCommandLineArgs())));
         return command;
     }
@@ -54,7 +60,7 @@ internal static class BiteCommand
     private static string DefaultProfile() =>
         Environment.GetEnvironmentVariable("ACPHYS_PROFILE") is { Length: > 0 } fromEnvironment ? fromEnvironment : "pr";
 
-    private static int Run(string profileName, int seeds, string? markdownPath, string? jsonPath, string[] bugIds, string[] args)
+    private static int Run(string profileName, int seeds, string? markdownPath, string? jsonPath, string[] bugIds, string[] exceptIds, string[] args)
     {
         var profile = Profile.Find(profileName) is { Name: "pr" or "nightly" } p ? p
             : throw new UsageException($"unknown profile '{profileName}' (known: pr, nightly)");
@@ -88,8 +94,15 @@ internal static class BiteCommand
             throw new UsageException($"unknown catalogue bug(s): {string.Join(", ", unknown)}; known: {string.Join(", ", catalogue.Select(b => b.Id))}");
         }
 
+        var left = exceptIds.SelectMany(b => b.Split(',', StringSplitOptions.RemoveEmptyEntries | StringSplitOptions.TrimEntries)).ToList();
+        var unknownInvariants = left.Where(id => InvariantCatalogue.Find(id) is null).ToList();
+        if (unknownInvariants.Count > 0)
+        {
+            throw new UsageException($"unknown invariant(s) for --except: {string.Join(", ", unknownInvariants)} (see: acphys invariants)");
+        }
+
         var bugs = ids.Count == 0 ? catalogue : catalogue.Where(b => ids.Contains(b.Id, StringComparer.OrdinalIgnoreCase)).ToList();
-        var report = RunWithProgress(bugs, profile, seeds);
+        var report = RunWithProgress(bugs, profile, seeds, left);
         Print(report);
 
         string command = string.Join(' ', new[] { ReplayLine.Program }.Concat(args.Skip(1)).Select(ReplayLine.Quote));
@@ -98,22 +111,22 @@ internal static class BiteCommand
         return report.Escaped.Any() ? ExitCodes.Violated : ExitCodes.Ok;
     }
 
-    private static BiteReport RunWithProgress(IReadOnlyList<KnownBug> bugs, Profile profile, int seeds)
+    private static BiteReport RunWithProgress(IReadOnlyList<KnownBug> bugs, Profile profile, int seeds, IReadOnlyCollection<string> except)
     {
         if (!Terminal.ShowsProgress)
         {
-            return BiteRunner.Run(bugs, profile, seeds);
+            return BiteRunner.Run(bugs, profile, seeds, except: except);
         }
 
         BiteReport? report = null;
         int done = 0;
-        Terminal.Err.Status().Start($"running {bugs.Count} catalogue bugs × {InvariantCatalogue.All.Count} invariants × {seeds} seed(s) ...", context =>
+        Terminal.Err.Status().Start($"running {bugs.Count} catalogue bugs × {InvariantCatalogue.All.Count - except.Count} invariants × {seeds} seed(s) ...", context =>
         {
             report = BiteRunner.Run(bugs, profile, seeds, progress: row =>
             {
                 done++;
                 context.Status(Markup.Escape($"ran {done}/{bugs.Count} bugs (last: {row.Bug.Id} {row.Status.ToString().ToLowerInvariant()}) ..."));
-            });
+            }, except: except);
         });
         return report!;
     }

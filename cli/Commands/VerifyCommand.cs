@@ -29,6 +29,11 @@ internal static class VerifyCommand
             Description = "Run only these invariants (comma-separated or repeated; see: acphys invariants).",
             HelpName = "ID[,ID...]",
         };
+        var except = new Option<string[]>("--except")
+        {
+            Description = "Leave out these invariants (comma-separated or repeated), e.g. the conformance ones to see what the independent invariants catch.",
+            HelpName = "ID[,ID...]",
+        };
         var seed = new Option<string>("--seed")
         {
             Description = "Use this seed for every invariant (no exhaustive sweeps); a failure's replay seed reproduces it.",
@@ -68,7 +73,7 @@ internal static class VerifyCommand
         var implOptions = new ImplementationOptions();
         var command = new Command("verify", "Run the invariant catalogue against the reference core, a planted fault, or your implementation (--impl, --impl-cmd), and report.")
         {
-            profile, only, seed, baseSeed, fault, quiet, classes, pick, fidelity, cases, sweeps, junit, markdown,
+            profile, only, except, seed, baseSeed, fault, quiet, classes, pick, fidelity, cases, sweeps, junit, markdown,
         };
         foreach (var option in implOptions.All)
         {
@@ -78,7 +83,7 @@ internal static class VerifyCommand
         command.SetAction(parse => Guard.Run("verify", () =>
         {
             var settings = VerifySettings.Parse(
-                parse.GetValue(profile) ?? DefaultProfile(), parse.GetValue(only), parse.GetValue(seed), parse.GetValue(baseSeed), parse.GetValue(fault))
+                parse.GetValue(profile) ?? DefaultProfile(), parse.GetValue(only), parse.GetValue(seed), parse.GetValue(baseSeed), parse.GetValue(fault), parse.GetValue(except))
                 with
             {
                 Quiet = parse.GetValue(quiet),

@@ -265,9 +265,14 @@ internal sealed class VerifyReport(VerifySettings settings, ICellPhysics impl)
     private string WholeRunReplay()
     {
         var words = new List<string> { ReplayLine.Program, "verify", "--profile", settings.Profile.Name, "--base-seed", Fmt.Decimal(settings.BaseSeed) };
-        if (settings.Only.Count > 0)
+        if (settings.OnlyGiven.Count > 0)
         {
-            words.AddRange(["--only", string.Join(',', settings.Only)]);
+            words.AddRange(["--only", string.Join(',', settings.OnlyGiven)]);
+        }
+
+        if (settings.Except.Count > 0)
+        {
+            words.AddRange(["--except", string.Join(',', settings.Except)]);
         }
 
         if (settings.Fault is not null)

@@ -20,8 +20,14 @@ internal sealed record VerifySettings
     /// <summary>Gets a value indicating whether the base seed was given with <c>--base-seed</c>.</summary>
     public required bool ExplicitBaseSeed { get; init; }
 
-    /// <summary>Gets the invariant IDs to run, in catalogue spelling; empty for all.</summary>
+    /// <summary>Gets the invariant IDs to run, in catalogue spelling (<c>--only</c> less <c>--except</c>); empty for all.</summary>
     public required IReadOnlyList<string> Only { get; init; }
+
+    /// <summary>Gets the invariant IDs left out with <c>--except</c>, in catalogue spelling; empty when none.</summary>
+    public IReadOnlyList<string> Except { get; init; } = [];
+
+    /// <summary>Gets the invariant IDs given with <c>--only</c>, in catalogue spelling; empty when none.</summary>
+    public IReadOnlyList<string> OnlyGiven { get; init; } = [];
 
     /// <summary>Gets the fixed seed for every invariant (<c>--seed</c>), if any.</summary>
     public Seed? FixedSeed { get; init; }
@@ -59,9 +65,10 @@ internal sealed record VerifySettings
     /// <param name="seed">The <c>--seed</c> value.</param>
     /// <param name="baseSeed">The <c>--base-seed</c> value.</param>
     /// <param name="fault">The <c>--fault</c> value.</param>
+    /// <param name="except">The <c>--except</c> values: invariants left out (e.g. the conformance ones, to see what the independent invariants catch).</param>
     /// <returns>The settings.</returns>
     /// <exception cref="UsageException">A value is unknown or malformed.</exception>
-    public static VerifySettings Parse(string? profileName, string[]? only, string? seed, string? baseSeed, string? fault)
+    public static VerifySettings Parse(string? profileName, string[]? only, string? seed, string? baseSeed, string? fault, string[]? except = null)
     {
         var profile = Spec.Running.Profile.Find(profileName ?? "pr")
             ?? throw new UsageException($"unknown profile '{profileName}' (known: pr, nightly; the default comes from ACPHYS_PROFILE when set)");
@@ -96,19 +103,30 @@ internal sealed record VerifySettings
         }
 
         ulong runBase = explicitBase ?? profile.BaseSeed ?? Seed.Fresh().Value;
+        var onlyGiven = ResolveIds(only, "--only");
+        var left = ResolveIds(except, "--except");
+        var run = left.Count == 0 ? onlyGiven
+            : [.. (onlyGiven.Count == 0 ? InvariantCatalogue.All.Select(i => i.Id) : onlyGiven).Where(id => !left.Contains(id))];
+        if (left.Count > 0 && run.Count == 0)
+        {
+            throw new UsageException("--except leaves no invariant to run");
+        }
+
         return new VerifySettings
         {
             Profile = profile with { BaseSeed = runBase },
             BaseSeed = runBase,
             FreshBaseSeed = explicitBase is null && profile.BaseSeed is null,
             ExplicitBaseSeed = explicitBase is not null,
-            Only = ResolveIds(only),
+            Only = run,
+            OnlyGiven = onlyGiven,
+            Except = left,
             FixedSeed = fixedSeed,
             Fault = planted,
         };
     }
 
-    private static List<string> ResolveIds(string[]? values)
+    private static List<string> ResolveIds(string[]? values, string option)
     {
         var ids = new List<string>();
         if (values is null || values.Length == 0)
@@ -129,7 +147,7 @@ internal sealed record VerifySettings
 
         if (ids.Count == 0)
         {
-            throw new UsageException("--only needs at least one invariant ID (see: acphys invariants)");
+            throw new UsageException($"{option} needs at least one invariant ID (see: acphys invariants)");
         }
 
         return ids;

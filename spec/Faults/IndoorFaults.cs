@@ -68,8 +68,8 @@ public static class IndoorFaults
         "issue #4: a port handled only cell-to-cell portals in find_transit_cells; a body walks out of the door and keeps the room's id (an absorbing indoor state, facts §5.1).",
         ["ENTER-EXIT", "PORTAL-TRANSIT"]);
 
-    /// <summary>Gets every indoor fault.</summary>
-    public static IReadOnlyList<PlantedFault> All { get; } = [OutdoorWins, NoHysteresisIndoor, InvertedPortalSide, NoVisibilityFilter, NoReframe, StaleSceneArray, AceHintKey, KeepCurrentOnMiss, NoExitTransit];
+    /// <summary>Gets every indoor fault, a port's transit faults (<see cref="IndoorPortFaults"/>) included.</summary>
+    public static IReadOnlyList<PlantedFault> All { get; } = [OutdoorWins, NoHysteresisIndoor, InvertedPortalSide, NoVisibilityFilter, NoReframe, StaleSceneArray, AceHintKey, KeepCurrentOnMiss, NoExitTransit, .. IndoorPortFaults.All];
 
     /// <summary>Returns an adapter carrying an indoor fault, or null for another fault.</summary>
     /// <param name="fault">The fault.</param>

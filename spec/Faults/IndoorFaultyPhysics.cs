@@ -7,17 +7,20 @@ using AcPhys.Spec.Scenes;
 namespace AcPhys.Spec.Faults;
 
 /// <summary>
-/// The reference scene query with one indoor defect in place, built from core's public steps (transit, pick,
-/// filter) so the core itself has no fault switches. Offers only <see cref="Op.FindCellScene"/>.
+/// The reference scene query with one indoor defect in place, so the core itself has no fault switches: the first
+/// faults are built from core's public steps (transit, pick, filter), a port's faults (<see cref="IndoorPortFaults"/>)
+/// run <see cref="FaultySceneQuery"/>. Reports load-hint flags and HitsInteriorCell as the buggy code computes them,
+/// answers transition queries, and delegates open land to the reference.
 /// </summary>
 internal sealed class IndoorFaultyPhysics(PlantedFault fault) : ICellPhysics
 {
-    private readonly ConditionalWeakTable<Scene, Scene> transformed = [];
+    private readonly ConditionalWeakTable<Scene, CellScene> built = [];
     private readonly CellArray array = new();
+    private readonly bool portFault = IndoorPortFaults.All.Contains(fault);
 
     public string Name => "reference+" + fault.Id;
 
-    public Op Ops => Op.All | Op.FindCellScene;
+    public Op Ops => Op.All | Op.FindCellScene | Op.FindCellTransition;
 
     public PickPolicy Pick => fault == IndoorFaults.NoHysteresisIndoor ? PickPolicy.CurrentFirst : PickPolicy.Retail;
 
@@ -35,46 +38,55 @@ internal sealed class IndoorFaultyPhysics(PlantedFault fault) : ICellPhysics
 
     public IReadOnlyList<CellId> OutsideCells(CellId cell, IReadOnlyList<Sphere> spheres) => ReferenceAdapter.Instance.OutsideCells(cell, spheres);
 
-    public FindCellResult FindCell(CellId cell, IReadOnlyList<Sphere> spheres, CellId current) => FindCell(null, cell, spheres, current);
+    public FindCellResult FindCell(CellId cell, IReadOnlyList<Sphere> spheres, CellId current) => ReferenceAdapter.Instance.FindCell(cell, spheres, current);
 
     public IReadOnlyList<CellId> OutsideCellsParts(IReadOnlyList<Part> parts) => ReferenceAdapter.Instance.OutsideCellsParts(parts);
 
-    public FindCellResult FindCell(Scene? scene, CellId cell, IReadOnlyList<Sphere> spheres, CellId current)
+    public FindCellResult FindCell(Scene? scene, CellId cell, IReadOnlyList<Sphere> spheres, CellId current) => FindCell(scene, cell, spheres, current, false);
+
+    public FindCellResult FindCell(Scene? scene, CellId cell, IReadOnlyList<Sphere> spheres, CellId current, bool loadCells)
     {
-        if (fault == IndoorFaults.InvertedPortalSide && scene is not null)
+        if (scene is null)
         {
-            scene = transformed.GetValue(scene, s => s with { Cells = [.. s.Cells.Select(c => c with { Portals = [.. c.Portals.Select(p => p with { PortalSide = !p.PortalSide })] })] });
+            return ReferenceAdapter.Instance.FindCell(null, cell, spheres, current, loadCells);
         }
 
-        if (fault == IndoorFaults.NoExitTransit && scene is not null)
-        {
-            scene = transformed.GetValue(scene, s => s with { Cells = [.. s.Cells.Select(c => c with { Portals = [.. c.Portals.Where(p => !p.IsExit)] })] });
-        }
-
-        var built = scene is null ? CellScene.Open : SceneBuild.Build(scene);
-        var fidelity = new IndoorFidelity(AceKeepsStaleCells: fault == IndoorFaults.StaleSceneArray, AceLoadHintLowKey: fault == IndoorFaults.AceHintKey);
-        if (fault == IndoorFaults.StaleSceneArray && array.Count > 64)
-        {
-            array.Reset(); // bound the stale growth; still far from a per-call reset
-        }
-        else if (fault != IndoorFaults.StaleSceneArray)
-        {
-            array.Reset();
-        }
-
+        var core = built.GetValue(scene, Build);
         Sphere[] s = [.. spheres];
+        var result = portFault
+            ? FaultySceneQuery.FindCellList(array, core, cell, s, loadCells, IndoorPortFaults.DefectOf(fault))
+            : FirstFaults(core, cell, s, current, loadCells);
+        return new FindCellResult(array.ToIdArray(), result.Containing) { Loaded = LoadedFlags(), HitsInteriorCell = result.HitsInteriorCell };
+    }
+
+    private CellScene Build(Scene scene)
+    {
+        var data = FaultyScenes.Transform(fault, scene);
+        return IndoorPortFaults.VolumeOf(fault) is { } wrap ? FaultySceneBuild.Build(data, wrap) : SceneBuild.Build(data);
+    }
+
+    private CellQueryResult FirstFaults(CellScene scene, CellId cell, Sphere[] s, CellId current, bool loadCells)
+    {
+        var fidelity = new IndoorFidelity(AceKeepsStaleCells: fault == IndoorFaults.StaleSceneArray, AceLoadHintLowKey: fault == IndoorFaults.AceHintKey);
+        if (fault != IndoorFaults.StaleSceneArray || array.Count > 64)
+        {
+            array.Reset(); // stale-scene-array: bound the stale growth; still far from a per-call reset
+        }
+
         bool customPick = fault == IndoorFaults.OutdoorWins || fault == IndoorFaults.NoReframe;
-        bool loadCells = fault == IndoorFaults.NoVisibilityFilter;
-        var options = new CellQueryOptions(PickPolicy.Retail, !customPick, loadCells || customPick, fidelity);
-        var result = SceneQuery.FindCellList(array, built, cell, s, current, options);
+        bool noFilter = loadCells || fault == IndoorFaults.NoVisibilityFilter;
+        var options = new CellQueryOptions(PickPolicy.Retail, !customPick, noFilter || customPick, fidelity);
+        var result = SceneQuery.FindCellList(array, scene, cell, s, current, options);
         var containing = result.Containing;
+        bool hits = result.HitsInteriorCell;
         if (customPick)
         {
-            bool visible = cell.IsIndoorByLowWord ? built.GetEnvCell(cell) is not null : cell.IsLand && built.IsLoaded(cell.Landblock);
-            containing = visible && s.Length > 0 ? PickFaulty(built, cell, s[0].Center) : CellId.None;
-            if (cell.IsIndoorByLowWord && visible && s.Length > 0)
+            bool visible = cell.IsIndoorByLowWord ? scene.GetEnvCell(cell) is not null : cell.IsLand && scene.IsLoaded(cell.Landblock);
+            containing = visible && s.Length > 0 ? PickFaulty(scene, cell, s[0].Center) : CellId.None;
+            hits |= containing.IsEnv;
+            if (cell.IsIndoorByLowWord && visible && s.Length > 0 && !noFilter)
             {
-                SceneQuery.FilterVisible(array, built, cell);
+                SceneQuery.FilterVisible(array, scene, cell);
             }
         }
 
@@ -83,7 +95,18 @@ internal sealed class IndoorFaultyPhysics(PlantedFault fault) : ICellPhysics
             containing = current;
         }
 
-        return new FindCellResult(array.ToIdArray(), containing);
+        return new CellQueryResult(containing, hits);
+    }
+
+    private bool[] LoadedFlags()
+    {
+        var flags = new bool[array.Count];
+        for (int i = 0; i < flags.Length; i++)
+        {
+            flags[i] = array[i].Loaded;
+        }
+
+        return flags;
     }
 
     private CellId PickFaulty(CellScene scene, CellId position, Vector3 center)

@@ -17,9 +17,10 @@ public static class BiteRunner
     /// <param name="baseSeed">The base seed; default the profile's, else a fresh one (reported in the result).</param>
     /// <param name="declaredOnly">Run only each bug's declared catchers (the fast CI check) instead of every invariant.</param>
     /// <param name="progress">Called after each bug.</param>
+    /// <param name="except">Invariant IDs left out (e.g. the conformance ones, to measure what the independent invariants catch).</param>
     /// <returns>The report.</returns>
     /// <exception cref="ArgumentOutOfRangeException"><paramref name="seeds"/> is below 1.</exception>
-    public static BiteReport Run(IReadOnlyList<KnownBug> bugs, Profile profile, int seeds = 1, ulong? baseSeed = null, bool declaredOnly = false, Action<BugBite>? progress = null)
+    public static BiteReport Run(IReadOnlyList<KnownBug> bugs, Profile profile, int seeds = 1, ulong? baseSeed = null, bool declaredOnly = false, Action<BugBite>? progress = null, IReadOnlyCollection<string>? except = null)
     {
         ArgumentOutOfRangeException.ThrowIfLessThan(seeds, 1);
         ulong runBase = baseSeed ?? profile.BaseSeed ?? Seed.Fresh().Value;
@@ -27,6 +28,10 @@ public static class BiteRunner
         var columns = declaredOnly
             ? InvariantCatalogue.All.Where(i => bugs.Any(b => b.IsAvailable && b.CaughtBy.Contains(i.Id, StringComparer.OrdinalIgnoreCase))).ToList()
             : [.. InvariantCatalogue.All];
+        if (except is { Count: > 0 })
+        {
+            columns = [.. columns.Where(i => !except.Contains(i.Id, StringComparer.OrdinalIgnoreCase))];
+        }
         var rows = new List<BugBite>();
         foreach (var bug in bugs)
         {

@@ -1,0 +1,50 @@
+namespace AcPhys.Spec.Faults;
+
+/// <summary>The one defect a <see cref="FaultySceneQuery"/> carries (none: it answers as the reference core does).</summary>
+internal enum IndoorDefect
+{
+    /// <summary>No defect.</summary>
+    None,
+
+    /// <summary>A portal neighbour's volume is tested with the sphere in the walked cell's frame.</summary>
+    NeighbourWrongFrame,
+
+    /// <summary>Building entry stops at the first room it enters.</summary>
+    BuildingStopFirstRoom,
+
+    /// <summary>The transit closure walks a snapshot of the array (count read once).</summary>
+    SnapshotClosure,
+
+    /// <summary>The exit-portal straddle test has no lower bound (only d &lt; r + EPS).</summary>
+    ExitStraddleOneSided,
+
+    /// <summary>A building portal with OtherPortalId 0xFFFF is entered anyway.</summary>
+    InvalidBldPortalEntered,
+
+    /// <summary>A loaded neighbour is added by the load-hint plane test, its volume never tested.</summary>
+    NeighbourByPlane,
+
+    /// <summary>The interior pick keeps the last env cell containing the centre.</summary>
+    PickLastEnv,
+
+    /// <summary>The pick uses the last sphere's centre.</summary>
+    PickLastSphere,
+
+    /// <summary>The visibility filter also removes load hints.</summary>
+    FilterDropsHints,
+
+    /// <summary>Building entry does not set HitsInteriorCell.</summary>
+    HitsInteriorUnset,
+
+    /// <summary>Env transit and building entry test sphere 0 only.</summary>
+    TransitSphere0Only,
+
+    /// <summary>The pick runs on the seeded array, before the transit closure.</summary>
+    PickBeforeTransit,
+
+    /// <summary>The load-hint test is the exit portal's straddle test (no PortalSide).</summary>
+    HintStraddleOnly,
+
+    /// <summary>ACE's early return after an interior pick (the filter skipped) while declaring retail.</summary>
+    EarlyReturnUndeclared,
+}
