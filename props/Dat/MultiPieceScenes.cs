@@ -22,10 +22,14 @@ internal static class MultiPieceScenes
 
     private static Gen<ScenePiece[]> Shape => Gen.Frequency(
         (2, from w in Size from d in Size select new[] { ScenePiece.FromBox(Vector3.Zero, new Vector3(w, d / 2, 3)), ScenePiece.FromBox(Vector3.Zero, new Vector3(w / 2, d, 3)) }),
-        (2, from w in Size from d in Size from steps in Gen.Choose(2, 4)
+        (2, from w in Size
+            from d in Size
+            from steps in Gen.Choose(2, 4)
             select Enumerable.Range(0, steps).Select(i => ScenePiece.FromBox(new Vector3(i * w / steps, 0, 0), new Vector3(w, d, i + 1f))).ToArray()),
         (1, from w in Size from d in Size select new[] { ScenePiece.FromBox(Vector3.Zero, new Vector3(w, d, 3)) }),
-        (2, from w in Size from d in Size from a in Gen.Choose(1, 63)
+        (2, from w in Size
+            from d in Size
+            from a in Gen.Choose(1, 63)
             from extra in Gen.Elements(true, false)
             select extra ? new[] { Rotated(w, d, a * MathF.PI / 64), ScenePiece.FromBox(Vector3.Zero, new Vector3(w, d, 2)) } : new[] { Rotated(w, d, a * MathF.PI / 64) }));
 
