@@ -69,7 +69,7 @@ internal static class Guard
     {
         switch (error)
         {
-            case UsageException or CorpusFormatException:
+            case UsageException or CorpusFormatException or AcPhys.Spec.Dat.DatFormatException:
                 Terminal.Error(verb, error.Message);
                 break;
             case AdapterFailureException:

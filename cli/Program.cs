@@ -19,6 +19,7 @@ internal static class Program
             FaultsCommand.Create(),
             ReplayCommand.Create(),
             RenderCommand.Create(),
+            SceneCommand.Create(),
             BiteCommand.Create(),
             ServeCommand.Create(),
             DiffCommand.Create(),

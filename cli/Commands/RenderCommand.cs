@@ -17,7 +17,7 @@ internal static class RenderCommand
     /// <returns>The command.</returns>
     public static Command Create()
     {
-        var file = new Argument<string>("file") { Description = "A walk file (kind \"walk\" or \"scene-walk\")." };
+        var file = new Argument<string>("file") { Description = "A walk file (kind \"walk\" or \"scene-walk\"), or a record folder holding a scene walk." };
         var output = new Option<string>("--output", "-o") { Description = "The SVG file to write (atomically).", HelpName = "FILE", Required = true };
         var fault = new Option<string>("--fault") { Description = "Run the walk against the reference with this planted fault.", HelpName = "FAULT" };
         var command = new Command("render", "Draw a walk or a scene walk as SVG, with the first violating step highlighted.") { file, output, fault };
@@ -27,12 +27,12 @@ internal static class RenderCommand
 
     private static int Run(string path, string output, string? faultId)
     {
-        if (!File.Exists(path))
+        if (!CaseFiles.Exists(path))
         {
-            throw new UsageException($"{(path.Length == 0 ? "''" : path)}: no such file");
+            throw new UsageException($"{(path.Length == 0 ? "''" : path)}: no such file or record folder");
         }
 
-        var entry = CorpusJson.ReadFile(path);
+        var entry = CaseFiles.Read(path);
         if (entry.Walk is null && entry.SceneWalk is null)
         {
             throw new UsageException($"{path}: $.kind: render draws walks and scene walks; this file is kind \"{entry.Kind}\"");

@@ -2,6 +2,7 @@ using System.CommandLine;
 using AcPhys.Cli.Impl;
 using AcPhys.Cli.Replay;
 using AcPhys.Spec.Adapters;
+using AcPhys.Spec.Dat;
 using AcPhys.Spec.Faults;
 
 namespace AcPhys.Cli.Commands;
@@ -15,7 +16,7 @@ internal static class ReplayCommand
     {
         var file = new Argument<string>("file")
         {
-            Description = "The input file: " + string.Join("; ", ReplayInputs.All.Select(i => $"kind \"{i.Kind}\": {i.Description}")) + ".",
+            Description = "The input file: " + string.Join("; ", ReplayInputs.All.Select(i => $"kind \"{i.Kind}\": {i.Description}")) + "; or a record folder (acphys scene export) holding a scene walk.",
         };
         var fault = new Option<string>("--fault")
         {
@@ -35,12 +36,13 @@ internal static class ReplayCommand
 
     private static int Run(string path, string? faultId, ImplementationChoice choice)
     {
-        if (Directory.Exists(path))
+        bool records = DatFolder.IsRecordFolder(path);
+        if (Directory.Exists(path) && !records)
         {
-            throw new UsageException($"{path}: is a directory; give one file");
+            throw new UsageException($"{path}: is a directory without {DatFolder.ManifestName}; give one file or a record folder");
         }
 
-        if (!File.Exists(path))
+        if (!records && !File.Exists(path))
         {
             throw new UsageException($"{(path.Length == 0 ? "''" : path)}: no such file");
         }
@@ -55,7 +57,7 @@ internal static class ReplayCommand
         if (!choice.IsExternal)
         {
             ICellPhysics impl = fault is null ? ReferenceAdapter.Instance : PlantedFaults.Create(fault.Id);
-            return ReplayInputs.For(path).Replay(path, new ReplayTarget(impl, fault));
+            return records ? SceneWalkReplay.Replay(CaseFiles.Read(path), path, new ReplayTarget(impl, fault)) : ReplayInputs.For(path).Replay(path, new ReplayTarget(impl, fault));
         }
 
         if (fault is not null)
@@ -63,11 +65,12 @@ internal static class ReplayCommand
             throw new UsageException("--fault configures the bundled reference; it does not apply to --impl / --impl-cmd");
         }
 
-        var input = ReplayInputs.For(path);
+        var entry = records ? CaseFiles.Read(path) : null;
+        var input = records ? null : ReplayInputs.For(path);
         var (external, owned) = choice.Open(line => Console.Error.WriteLine("[impl] " + line));
         using (owned)
         {
-            return input.Replay(path, new ReplayTarget(external, null));
+            return entry is not null ? SceneWalkReplay.Replay(entry, path, new ReplayTarget(external, null)) : input!.Replay(path, new ReplayTarget(external, null));
         }
     }
 }

@@ -21,9 +21,15 @@ internal sealed class SceneWalkReplay : IReplayInput
     public string Description => "a walk in a scene (loaded blocks, buildings, env cells, portals)";
 
     /// <inheritdoc/>
-    public int Replay(string path, ReplayTarget target)
+    public int Replay(string path, ReplayTarget target) => Replay(CaseFiles.Read(path), path, target);
+
+    /// <summary>Replays an entry already read (from a corpus file or a record folder).</summary>
+    /// <param name="entry">The entry (kind scene-walk).</param>
+    /// <param name="path">Where it came from, for messages.</param>
+    /// <param name="target">What to check against.</param>
+    /// <returns>The exit code.</returns>
+    public static int Replay(CorpusEntry entry, string path, ReplayTarget target)
     {
-        var entry = CorpusJson.ReadFile(path);
         var sw = entry.SceneWalk!;
         Terminal.Line($"replay {path}: {entry.Title}");
         Terminal.Line($"  kind scene-walk, found by {entry.FoundBy}"

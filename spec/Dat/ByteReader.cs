@@ -1,0 +1,148 @@
+using System.Buffers.Binary;
+using System.Numerics;
+using AcPhys.Core;
+
+namespace AcPhys.Spec.Dat;
+
+/// <summary>
+/// Bounded little-endian record reader. Every failure is a <see cref="DatFormatException"/> naming the record, the
+/// field and its byte offset; counts are checked against the remaining bytes before anything is allocated.
+/// </summary>
+/// <param name="data">The record bytes.</param>
+/// <param name="record">A name for messages (the record id, e.g. <c>EnvCell 0x01020100</c>).</param>
+public sealed class ByteReader(byte[] data, string record)
+{
+    /// <summary>Gets the offset of the next byte.</summary>
+    public int Position { get; private set; }
+
+    /// <summary>Gets the number of unread bytes.</summary>
+    public int Remaining => data.Length - Position;
+
+    /// <summary>Gets the name used in messages.</summary>
+    public string Record => record;
+
+    /// <summary>Throws the format error for a field at an offset.</summary>
+    /// <param name="field">The field.</param>
+    /// <param name="offset">Its byte offset.</param>
+    /// <param name="message">The problem.</param>
+    /// <returns>Never returns.</returns>
+    public DatFormatException Error(string field, int offset, string message) =>
+        new($"{record}: {field} at byte {offset}: {message}");
+
+    /// <summary>Refuses the record unless a condition holds.</summary>
+    /// <param name="ok">The condition.</param>
+    /// <param name="field">The field.</param>
+    /// <param name="offset">Its byte offset.</param>
+    /// <param name="message">The problem.</param>
+    public void Require(bool ok, string field, int offset, string message)
+    {
+        if (!ok)
+        {
+            throw Error(field, offset, message);
+        }
+    }
+
+    /// <summary>Reads a byte.</summary>
+    /// <param name="field">The field.</param>
+    /// <returns>The value.</returns>
+    public byte U8(string field) => Take(1, field)[0];
+
+    /// <summary>Reads a u16.</summary>
+    /// <param name="field">The field.</param>
+    /// <returns>The value.</returns>
+    public ushort U16(string field) => BinaryPrimitives.ReadUInt16LittleEndian(Take(2, field));
+
+    /// <summary>Reads an i16.</summary>
+    /// <param name="field">The field.</param>
+    /// <returns>The value.</returns>
+    public short I16(string field) => BinaryPrimitives.ReadInt16LittleEndian(Take(2, field));
+
+    /// <summary>Reads a u32.</summary>
+    /// <param name="field">The field.</param>
+    /// <returns>The value.</returns>
+    public uint U32(string field) => BinaryPrimitives.ReadUInt32LittleEndian(Take(4, field));
+
+    /// <summary>Reads an i32.</summary>
+    /// <param name="field">The field.</param>
+    /// <returns>The value.</returns>
+    public int I32(string field) => BinaryPrimitives.ReadInt32LittleEndian(Take(4, field));
+
+    /// <summary>Reads an f32 (any bits; callers that need finite values check).</summary>
+    /// <param name="field">The field.</param>
+    /// <returns>The value.</returns>
+    public float F32(string field) => BitConverter.UInt32BitsToSingle(U32(field));
+
+    /// <summary>Reads a Vector3 whose components must be finite.</summary>
+    /// <param name="field">The field.</param>
+    /// <returns>The value.</returns>
+    public Vector3 Vec(string field)
+    {
+        int at = Position;
+        var v = new Vector3(F32(field), F32(field), F32(field));
+        Require(float.IsFinite(v.X) && float.IsFinite(v.Y) && float.IsFinite(v.Z), field, at, "non-finite value");
+        return v;
+    }
+
+    /// <summary>Reads a Frame (origin, then W, X, Y, Z; facts §5.8), all finite.</summary>
+    /// <param name="field">The field.</param>
+    /// <returns>Origin and rotation.</returns>
+    public (Vector3 Origin, Quaternion Rotation) Frame(string field)
+    {
+        var origin = Vec(field + ".origin");
+        int at = Position;
+        float w = F32(field + ".rotation"), x = F32(field + ".rotation"), y = F32(field + ".rotation"), z = F32(field + ".rotation");
+        Require(float.IsFinite(w) && float.IsFinite(x) && float.IsFinite(y) && float.IsFinite(z), field + ".rotation", at, "non-finite quaternion");
+        return (origin, new Quaternion(x, y, z, w));
+    }
+
+    /// <summary>Reads a Plane, finite.</summary>
+    /// <param name="field">The field.</param>
+    /// <returns>The plane.</returns>
+    public CellPlane Plane(string field)
+    {
+        var n = Vec(field + ".normal");
+        int at = Position;
+        float d = F32(field + ".d");
+        Require(float.IsFinite(d), field + ".d", at, "non-finite value");
+        return new CellPlane(n, d);
+    }
+
+    /// <summary>Reads a Sphere, finite.</summary>
+    /// <param name="field">The field.</param>
+    /// <returns>The sphere.</returns>
+    public Sphere Sphere(string field)
+    {
+        var c = Vec(field + ".center");
+        int at = Position;
+        float r = F32(field + ".radius");
+        Require(float.IsFinite(r), field + ".radius", at, "non-finite value");
+        return new Sphere(c, r);
+    }
+
+    /// <summary>Checks a count against the remaining bytes (each item at least <paramref name="minBytes"/>).</summary>
+    /// <param name="count">The count read.</param>
+    /// <param name="minBytes">The smallest size of one item.</param>
+    /// <param name="field">The count's field.</param>
+    /// <param name="at">The count's offset.</param>
+    /// <returns>The count as an int.</returns>
+    public int Count(long count, int minBytes, string field, int at)
+    {
+        Require(count >= 0 && count * minBytes <= Remaining, field, at, $"count {count} needs at least {count * minBytes} bytes, {Remaining} remain");
+        return (int)count;
+    }
+
+    /// <summary>Skips the ALIGN padding: (4 − pos % 4) % 4 bytes from the record start.</summary>
+    /// <param name="field">What the padding follows.</param>
+    public void Align(string field) => Take((4 - (Position % 4)) % 4, field + " (ALIGN padding)");
+
+    /// <summary>Refuses trailing bytes.</summary>
+    public void End() => Require(Remaining == 0, "end of record", Position, $"{Remaining} trailing byte(s)");
+
+    private ReadOnlySpan<byte> Take(int n, string field)
+    {
+        Require(n <= Remaining, field, Position, $"record ends ({Remaining} byte(s) left, {n} needed)");
+        var span = data.AsSpan(Position, n);
+        Position += n;
+        return span;
+    }
+}

@@ -1,0 +1,97 @@
+using System.Buffers.Binary;
+using System.Numerics;
+using AcPhys.Core;
+
+namespace AcPhys.Spec.Dat;
+
+/// <summary>Little-endian record writer; <see cref="Align"/> pads from the record's first byte (dat-records.md, ALIGN).</summary>
+public sealed class ByteWriter
+{
+    private readonly MemoryStream buffer = new();
+    private readonly byte[] scratch = new byte[8];
+
+    /// <summary>Gets the number of bytes written.</summary>
+    public int Position => (int)buffer.Length;
+
+    /// <summary>Returns the bytes.</summary>
+    /// <returns>The record.</returns>
+    public byte[] ToArray() => buffer.ToArray();
+
+    /// <summary>Writes a byte.</summary>
+    /// <param name="v">The value.</param>
+    public void U8(byte v) => buffer.WriteByte(v);
+
+    /// <summary>Writes a u16.</summary>
+    /// <param name="v">The value.</param>
+    public void U16(ushort v)
+    {
+        BinaryPrimitives.WriteUInt16LittleEndian(scratch, v);
+        buffer.Write(scratch, 0, 2);
+    }
+
+    /// <summary>Writes an i16.</summary>
+    /// <param name="v">The value.</param>
+    public void I16(short v) => U16(unchecked((ushort)v));
+
+    /// <summary>Writes a u32.</summary>
+    /// <param name="v">The value.</param>
+    public void U32(uint v)
+    {
+        BinaryPrimitives.WriteUInt32LittleEndian(scratch, v);
+        buffer.Write(scratch, 0, 4);
+    }
+
+    /// <summary>Writes an i32.</summary>
+    /// <param name="v">The value.</param>
+    public void I32(int v) => U32(unchecked((uint)v));
+
+    /// <summary>Writes an f32.</summary>
+    /// <param name="v">The value.</param>
+    public void F32(float v) => U32(BitConverter.SingleToUInt32Bits(v));
+
+    /// <summary>Writes a Vector3.</summary>
+    /// <param name="v">The value.</param>
+    public void Vec(Vector3 v)
+    {
+        F32(v.X);
+        F32(v.Y);
+        F32(v.Z);
+    }
+
+    /// <summary>Writes a Frame: origin, then the quaternion W, X, Y, Z (facts §5.8).</summary>
+    /// <param name="origin">The origin.</param>
+    /// <param name="q">The rotation.</param>
+    public void Frame(Vector3 origin, Quaternion q)
+    {
+        Vec(origin);
+        F32(q.W);
+        F32(q.X);
+        F32(q.Y);
+        F32(q.Z);
+    }
+
+    /// <summary>Writes a Plane: normal, d.</summary>
+    /// <param name="p">The plane.</param>
+    public void Plane(CellPlane p)
+    {
+        Vec(p.Normal);
+        F32(p.D);
+    }
+
+    /// <summary>Writes a Sphere: centre, radius.</summary>
+    /// <param name="s">The sphere.</param>
+    public void Sphere(Sphere s)
+    {
+        Vec(s.Center);
+        F32(s.Radius);
+    }
+
+    /// <summary>Pads with zeros to a multiple of 4 bytes from the record start.</summary>
+    public void Align()
+    {
+        while (Position % 4 != 0)
+        {
+            U8(0);
+        }
+    }
+}

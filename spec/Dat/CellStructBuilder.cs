@@ -1,0 +1,167 @@
+using System.Numerics;
+using System.Text;
+using AcPhys.Core;
+using AcPhys.Spec.Scenes;
+
+namespace AcPhys.Spec.Dat;
+
+/// <summary>
+/// Builds a cell's CellStruct (docs/dat-scenes.md, "Environment"): per piece its corner vertices and face polygons;
+/// then one quad polygon per portal lying in the portal's plane and wound so its plane (<see cref="PolygonPlane"/>)
+/// is the portal plane; the cell BSP and the physics BSP shaped as core's <see cref="CellBsp"/> builds them
+/// (piece 0's planes the positive chain, further pieces under negative children, facts §5.7).
+/// </summary>
+public static class CellStructBuilder
+{
+    /// <summary>The dummy surface index every polygon uses (the EnvCell lists one surface).</summary>
+    public const short Surface = 0;
+
+    /// <summary>Returns a key equal for cells whose records would be equal: every piece plane and portal plane, by bits.</summary>
+    /// <param name="cell">The cell.</param>
+    /// <returns>The key.</returns>
+    public static string GeometryKey(SceneCell cell)
+    {
+        var text = new StringBuilder();
+        foreach (var piece in cell.Pieces)
+        {
+            text.Append('P');
+            foreach (var p in piece.ToConvex().Planes)
+            {
+                Bits(text, p);
+            }
+        }
+
+        foreach (var portal in cell.Portals)
+        {
+            text.Append('Q');
+            Bits(text, PolygonPlane.Unit(portal.Plane));
+        }
+
+        return text.ToString();
+    }
+
+    /// <summary>Builds the CellStruct; portal i's polygon id is <c>PortalPolygonIds[i]</c>.</summary>
+    /// <param name="key">The CellStruct key.</param>
+    /// <param name="cell">The cell.</param>
+    /// <returns>The record.</returns>
+    public static CellStructRecord Build(uint key, SceneCell cell)
+    {
+        var pieces = cell.Pieces.Select(p => p.ToConvex()).ToArray();
+        var vertices = new List<DatVertex>();
+        var polygons = new List<DatPolygon>();
+        var facesOf = new List<ushort[]>();
+        foreach (var piece in pieces)
+        {
+            int first = vertices.Count;
+            vertices.AddRange(piece.Vertices.Select((v, i) => Vertex(first + i, v)));
+            var faces = new List<ushort>();
+            foreach (var plane in piece.Planes)
+            {
+                var on = Enumerable.Range(0, piece.Vertices.Count).Where(i => MathF.Abs(plane.Distance(piece.Vertices[i])) <= 1e-3f).ToList();
+                if (on.Count < 3)
+                {
+                    continue;
+                }
+
+                var ordered = Wind(on, i => piece.Vertices[i], plane.Normal);
+                faces.Add(checked((ushort)polygons.Count));
+                polygons.Add(Polygon(polygons.Count, [.. ordered.Select(i => (short)(first + i))]));
+            }
+
+            facesOf.Add([.. faces]);
+        }
+
+        var bounds = ConvexPiece.BoundsOf(pieces);
+        var portalIds = new List<ushort>();
+        foreach (var portal in cell.Portals)
+        {
+            int first = vertices.Count;
+            vertices.AddRange(PortalQuad(PolygonPlane.Unit(portal.Plane), bounds).Select((v, i) => Vertex(first + i, v)));
+            portalIds.Add(checked((ushort)polygons.Count));
+            polygons.Add(Polygon(polygons.Count, [(short)first, (short)(first + 1), (short)(first + 2), (short)(first + 3)]));
+        }
+
+        var physicsPolygons = polygons.Take(polygons.Count - portalIds.Count).ToList();
+        var cellBsp = Tree(pieces, facesOf, physics: false);
+        var physicsBsp = Tree(pieces, facesOf, physics: true);
+        return new CellStructRecord(key, vertices, polygons, portalIds, cellBsp, physicsPolygons, physicsBsp, null);
+    }
+
+    /// <summary>Returns the four corners of the portal quad: centred on the cell's bounds, spanning them, wound so u × v = N.</summary>
+    /// <param name="plane">The unit portal plane.</param>
+    /// <param name="bounds">The cell's bounds.</param>
+    /// <returns>The corners, counter-clockwise seen from the normal's side.</returns>
+    public static Vector3[] PortalQuad(CellPlane plane, Box bounds)
+    {
+        var n = plane.Normal;
+        var (u, v) = PolygonPlane.Tangents(n);
+        var centre = (bounds.Min + bounds.Max) / 2;
+        float s = MathF.Ceiling((Vector3.Distance(bounds.Min, bounds.Max) / 2) + 1);
+        if (PolygonPlane.AxisOf(n) is { } axis)
+        {
+            // Exact: every corner has coordinate −D·N[axis] (N[axis] = ±1) on the axis, so the plane read back is bit-exact.
+            centre[axis] = -plane.D * n[axis];
+        }
+        else
+        {
+            centre -= plane.Distance(centre) * n;
+        }
+
+        Vector3 C(float a, float b)
+        {
+            var p = centre + (a * s * u) + (b * s * v);
+            if (PolygonPlane.AxisOf(n) is { } k)
+            {
+                p[k] = centre[k];
+            }
+
+            return p;
+        }
+
+        return [C(-1, -1), C(1, -1), C(1, 1), C(-1, 1)];
+    }
+
+    private static BspNode Tree(ConvexPiece[] pieces, List<ushort[]> faces, bool physics)
+    {
+        // As CellBsp: the root is piece 0's chain; piece i's chain root hangs under piece i−1's chain root's negative child.
+        BspNode? negative = null;
+        for (int i = pieces.Length - 1; i >= 1; i--)
+        {
+            negative = Chain(pieces[i], i, faces[i], physics, negative);
+        }
+
+        return Chain(pieces[0], 0, faces[0], physics, negative);
+    }
+
+    private static BspNode Chain(ConvexPiece piece, int index, ushort[] faces, bool physics, BspNode? negative)
+    {
+        var b = piece.Bounds;
+        var sphere = new Sphere((b.Min + b.Max) / 2, Vector3.Distance(b.Min, b.Max) / 2);
+        BspNode next = physics ? BspNode.NewLeaf(index) with { Solid = 1, Sphere = sphere, Polygons = faces } : BspNode.NewLeaf(index);
+        for (int i = piece.Planes.Count - 1; i >= 0; i--)
+        {
+            var node = BspNode.Internal(piece.Planes[i], next, i == 0 ? negative : null);
+            next = physics ? node with { Sphere = sphere } : node;
+        }
+
+        return next;
+    }
+
+    private static List<int> Wind(List<int> ids, Func<int, Vector3> at, Vector3 normal)
+    {
+        var (u, v) = PolygonPlane.Tangents(Vector3.Normalize(normal));
+        var centroid = ids.Aggregate(Vector3.Zero, (s, i) => s + at(i)) / ids.Count;
+        return [.. ids.OrderBy(i => MathF.Atan2(Vector3.Dot(at(i) - centroid, v), Vector3.Dot(at(i) - centroid, u)))];
+    }
+
+    private static DatVertex Vertex(int id, Vector3 p) => new(checked((ushort)id), p, Vector3.UnitZ, [Vector2.Zero]);
+
+    private static DatPolygon Polygon(int id, short[] vertexIds) =>
+        new(checked((ushort)id), 0, 1, Surface, Surface, vertexIds, new byte[vertexIds.Length], []);
+
+    private static void Bits(StringBuilder text, CellPlane p) =>
+        text.Append(BitConverter.SingleToUInt32Bits(p.Normal.X)).Append(',')
+            .Append(BitConverter.SingleToUInt32Bits(p.Normal.Y)).Append(',')
+            .Append(BitConverter.SingleToUInt32Bits(p.Normal.Z)).Append(',')
+            .Append(BitConverter.SingleToUInt32Bits(p.D)).Append(';');
+}

@@ -1,0 +1,103 @@
+using System.Numerics;
+using AcPhys.Core;
+using AcPhys.Spec.Scenes;
+
+namespace AcPhys.Spec.Dat;
+
+/// <summary>
+/// Reads a CellStruct back into scene geometry: the cell BSP's positive chains are the convex pieces (the root's chain
+/// first, then the chains found under negative children, depth first — the order <see cref="CellStructBuilder"/> and
+/// core's <see cref="CellBsp"/> lay them out); portal planes come from their polygons' vertices.
+/// </summary>
+public static class CellStructPieces
+{
+    /// <summary>Returns the pieces of a cell BSP. Six axis planes in box order (−x, +x, −y, +y, −z, +z faces) come back as a box.</summary>
+    /// <param name="root">The cell BSP.</param>
+    /// <param name="where">Record and field, for messages.</param>
+    /// <returns>The pieces.</returns>
+    /// <exception cref="DatFormatException">A chain does not end in a leaf, or its planes bound no convex piece.</exception>
+    public static List<ScenePiece> Of(BspNode root, string where)
+    {
+        var pieces = new List<ScenePiece>();
+        Collect(root, where, pieces);
+        return pieces;
+    }
+
+    /// <summary>Returns a piece from its planes in chain order: a box when they are <see cref="ConvexPiece.FromBox"/>'s six planes.</summary>
+    /// <param name="planes">The planes.</param>
+    /// <returns>The piece.</returns>
+    public static ScenePiece PieceOf(IReadOnlyList<CellPlane> planes)
+    {
+        if (planes.Count == 6
+            && planes[0].Normal == Vector3.UnitX && planes[1].Normal == -Vector3.UnitX
+            && planes[2].Normal == Vector3.UnitY && planes[3].Normal == -Vector3.UnitY
+            && planes[4].Normal == Vector3.UnitZ && planes[5].Normal == -Vector3.UnitZ)
+        {
+            var min = new Vector3(-planes[0].D, -planes[2].D, -planes[4].D);
+            var max = new Vector3(planes[1].D, planes[3].D, planes[5].D);
+            if (min.X < max.X && min.Y < max.Y && min.Z < max.Z)
+            {
+                return ScenePiece.FromBox(min, max);
+            }
+        }
+
+        return new ScenePiece(null, [.. planes]);
+    }
+
+    /// <summary>Returns the plane of a portal polygon.</summary>
+    /// <param name="cs">The CellStruct.</param>
+    /// <param name="polygonId">The polygon id.</param>
+    /// <param name="where">Record and field, for messages.</param>
+    /// <returns>The plane.</returns>
+    /// <exception cref="DatFormatException">The polygon or one of its vertices is missing, or it spans no area.</exception>
+    public static CellPlane PortalPlane(CellStructRecord cs, ushort polygonId, string where)
+    {
+        var polygon = cs.Polygons.FirstOrDefault(p => p.Id == polygonId)
+            ?? throw new DatFormatException($"{where}: polygon {polygonId} is not in CellStruct {cs.Key}");
+        if (!cs.PortalPolygonIds.Contains(polygonId))
+        {
+            throw new DatFormatException($"{where}: polygon {polygonId} is not in CellStruct {cs.Key}'s portal polygon ids");
+        }
+
+        var points = new List<Vector3>();
+        foreach (short id in polygon.VertexIds)
+        {
+            var v = cs.Vertices.FirstOrDefault(x => x.Id == (ushort)id)
+                ?? throw new DatFormatException($"{where}: polygon {polygonId} names vertex {id}, which CellStruct {cs.Key} lacks");
+            points.Add(v.Origin);
+        }
+
+        return PolygonPlane.Of(points) ?? throw new DatFormatException($"{where}: polygon {polygonId} spans no area (no plane)");
+    }
+
+    private static void Collect(BspNode node, string where, List<ScenePiece> pieces)
+    {
+        var planes = new List<CellPlane>();
+        var chain = new List<BspNode>();
+        var n = node;
+        while (!n.IsLeaf)
+        {
+            planes.Add(n.Plane);
+            chain.Add(n);
+            n = n.Positive ?? throw new DatFormatException($"{where}: node at byte {n.Offset} ('{BspTags.Name(n.Tag)}') ends a positive chain without a LEAF");
+        }
+
+        try
+        {
+            _ = new ConvexPiece(planes);
+        }
+        catch (ArgumentException e)
+        {
+            throw new DatFormatException($"{where}: the positive chain from byte {node.Offset} is no convex piece ({planes.Count} planes): {e.Message.Split(" (Parameter", 2)[0]}");
+        }
+
+        pieces.Add(PieceOf(planes));
+        foreach (var c in chain)
+        {
+            if (c.Negative is { } neg)
+            {
+                Collect(neg, where, pieces);
+            }
+        }
+    }
+}

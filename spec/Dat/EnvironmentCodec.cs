@@ -1,0 +1,222 @@
+using System.Numerics;
+
+namespace AcPhys.Spec.Dat;
+
+/// <summary>
+/// The Environment record 0x0D?????? (dat-records.md, Environment and CellStruct): id, a plain u32 count, then
+/// (key, CellStruct) pairs. The CellStruct's ALIGN points are the two marked in the layout: after the portal
+/// polygon ids and at its end; nowhere else (hasDrawingBSP can sit at an odd offset).
+/// </summary>
+public static class EnvironmentCodec
+{
+    /// <summary>Writes an Environment record.</summary>
+    /// <param name="id">The record id.</param>
+    /// <param name="structs">The CellStructs.</param>
+    /// <returns>The bytes.</returns>
+    public static byte[] Write(uint id, IReadOnlyList<CellStructRecord> structs)
+    {
+        var w = new ByteWriter();
+        w.U32(id);
+        w.U32((uint)structs.Count);
+        foreach (var s in structs)
+        {
+            w.U32(s.Key);
+            w.U32((uint)s.Polygons.Count);
+            w.U32((uint)s.PhysicsPolygons.Count);
+            w.U32((uint)s.PortalPolygonIds.Count);
+            w.I32(1); // vertex type: must be 1
+            w.U32((uint)s.Vertices.Count);
+            foreach (var v in s.Vertices)
+            {
+                w.U16(v.Id);
+                w.U16((ushort)v.Uvs.Count);
+                w.Vec(v.Origin);
+                w.Vec(v.Normal);
+                foreach (var uv in v.Uvs)
+                {
+                    w.F32(uv.X);
+                    w.F32(uv.Y);
+                }
+            }
+
+            foreach (var p in s.Polygons)
+            {
+                Polygon(w, p);
+            }
+
+            foreach (ushort p in s.PortalPolygonIds)
+            {
+                w.U16(p);
+            }
+
+            w.Align();
+            BspCodec.Write(w, s.CellBsp, BspTreeType.Cell);
+            foreach (var p in s.PhysicsPolygons)
+            {
+                Polygon(w, p);
+            }
+
+            BspCodec.Write(w, s.PhysicsBsp, BspTreeType.Physics);
+            w.U32(s.DrawingBsp is null ? 0u : 1u);
+            if (s.DrawingBsp is { } drawing)
+            {
+                BspCodec.Write(w, drawing, BspTreeType.Drawing);
+            }
+
+            w.Align();
+        }
+
+        return w.ToArray();
+    }
+
+    /// <summary>Reads an Environment record strictly (duplicate keys, bad vertex types, unknown tags and trailing bytes refused).</summary>
+    /// <param name="data">The bytes.</param>
+    /// <param name="expectedId">The id the record must carry.</param>
+    /// <returns>The CellStructs by key, in record order.</returns>
+    /// <exception cref="DatFormatException">Any defect.</exception>
+    public static IReadOnlyList<CellStructRecord> Read(byte[] data, uint expectedId)
+    {
+        var r = new ByteReader(data, "Environment " + RecordIds.Text(expectedId));
+        uint id = r.U32("id");
+        r.Require(id == expectedId, "id", 0, $"record id {RecordIds.Text(id)} is not its name {RecordIds.Text(expectedId)}");
+        int count = r.Count(r.U32("numCellStructs"), 4 + 24, "numCellStructs", 4);
+        var keys = new HashSet<uint>();
+        var result = new List<CellStructRecord>(count);
+        for (int i = 0; i < count; i++)
+        {
+            int at = r.Position;
+            uint key = r.U32($"cellStructs[{i}].key");
+            r.Require(keys.Add(key), $"cellStructs[{i}].key", at, $"duplicate CellStruct key {key}");
+            result.Add(CellStruct(r, key, $"cellStructs[{i}]"));
+        }
+
+        r.End();
+        return result;
+    }
+
+    private static CellStructRecord CellStruct(ByteReader r, uint key, string at)
+    {
+        int countsAt = r.Position;
+        uint numPolygons = r.U32(at + ".numPolygons");
+        uint numPhysics = r.U32(at + ".numPhysicsPolygons");
+        uint numPortals = r.U32(at + ".numPortals");
+        int typeAt = r.Position;
+        int vertexType = r.I32(at + ".vertexType");
+        r.Require(vertexType == 1, at + ".vertexType", typeAt, $"vertex type {vertexType}, must be 1");
+        int vAt = r.Position;
+        int numVertices = r.Count(r.U32(at + ".numVertices"), 28, at + ".numVertices", vAt);
+        var vertices = new List<DatVertex>(numVertices);
+        var vertexIds = new HashSet<ushort>();
+        for (int i = 0; i < numVertices; i++)
+        {
+            string f = $"{at}.vertices[{i}]";
+            int idAt = r.Position;
+            ushort id = r.U16(f + ".id");
+            r.Require(vertexIds.Add(id), f + ".id", idAt, $"duplicate vertex id {id}");
+            int uvAt = r.Position;
+            int numUvs = r.Count(r.U16(f + ".numUVs"), 8, f + ".numUVs", uvAt);
+            var origin = r.Vec(f + ".origin");
+            var normal = r.Vec(f + ".normal");
+            var uvs = new Vector2[numUvs];
+            for (int k = 0; k < numUvs; k++)
+            {
+                uvs[k] = new Vector2(r.F32(f + ".uv"), r.F32(f + ".uv"));
+            }
+
+            vertices.Add(new DatVertex(id, origin, normal, uvs));
+        }
+
+        var polygons = Polygons(r, numPolygons, at + ".numPolygons", countsAt, at + ".polygons");
+        int portals = r.Count(numPortals, 2, at + ".numPortals", countsAt + 8);
+        var portalIds = new ushort[portals];
+        for (int i = 0; i < portals; i++)
+        {
+            portalIds[i] = r.U16($"{at}.portalPolygonIds[{i}]");
+        }
+
+        r.Align(at + ".portalPolygonIds");
+        var cellBsp = BspCodec.Read(r, BspTreeType.Cell, at + ".cellBsp");
+        var physics = Polygons(r, numPhysics, at + ".numPhysicsPolygons", countsAt + 4, at + ".physicsPolygons");
+        var physicsBsp = BspCodec.Read(r, BspTreeType.Physics, at + ".physicsBsp");
+        int hasAt = r.Position;
+        uint hasDrawing = r.U32(at + ".hasDrawingBSP");
+        r.Require(hasDrawing <= 1, at + ".hasDrawingBSP", hasAt, $"expected 0 or 1, got {hasDrawing}");
+        var drawing = hasDrawing != 0 ? BspCodec.Read(r, BspTreeType.Drawing, at + ".drawingBsp") : null;
+        r.Align(at + " end");
+        return new CellStructRecord(key, vertices, polygons, portalIds, cellBsp, physics, physicsBsp, drawing);
+    }
+
+    private static List<DatPolygon> Polygons(ByteReader r, uint count, string countField, int countAt, string at)
+    {
+        int n = r.Count(count, 12, countField, countAt);
+        var list = new List<DatPolygon>(n);
+        var ids = new HashSet<ushort>();
+        for (int i = 0; i < n; i++)
+        {
+            string f = $"{at}[{i}]";
+            int idAt = r.Position;
+            ushort id = r.U16(f + ".id");
+            r.Require(ids.Add(id), f + ".id", idAt, $"duplicate polygon id {id}");
+            byte numPts = r.U8(f + ".numPts");
+            byte stippling = r.U8(f + ".stippling");
+            int sAt = r.Position;
+            int sides = r.I32(f + ".sidesType");
+            r.Require(sides is >= 0 and <= 3, f + ".sidesType", sAt, $"sides type {sides}, expected 0..3");
+            short pos = r.I16(f + ".posSurface");
+            short neg = r.I16(f + ".negSurface");
+            var vertexIds = new short[numPts];
+            for (int k = 0; k < numPts; k++)
+            {
+                vertexIds[k] = r.I16(f + ".vertexIds");
+            }
+
+            var p = new DatPolygon(id, stippling, sides, pos, neg, vertexIds, [], []);
+            var posUvs = p.HasPosUvs ? Bytes(r, numPts, f + ".posUVs") : [];
+            var negUvs = p.HasNegUvs ? Bytes(r, numPts, f + ".negUVs") : [];
+            list.Add(p with { PosUvs = posUvs, NegUvs = negUvs });
+        }
+
+        return list;
+    }
+
+    private static byte[] Bytes(ByteReader r, int n, string field)
+    {
+        var b = new byte[n];
+        for (int i = 0; i < n; i++)
+        {
+            b[i] = r.U8(field);
+        }
+
+        return b;
+    }
+
+    private static void Polygon(ByteWriter w, DatPolygon p)
+    {
+        w.U16(p.Id);
+        w.U8((byte)p.VertexIds.Count);
+        w.U8(p.Stippling);
+        w.I32(p.SidesType);
+        w.I16(p.PosSurface);
+        w.I16(p.NegSurface);
+        foreach (short v in p.VertexIds)
+        {
+            w.I16(v);
+        }
+
+        if (p.HasPosUvs)
+        {
+            foreach (byte b in p.PosUvs)
+            {
+                w.U8(b);
+            }
+        }
+
+        if (p.HasNegUvs)
+        {
+            foreach (byte b in p.NegUvs)
+            {
+                w.U8(b);
+            }
+        }
+    }
+}

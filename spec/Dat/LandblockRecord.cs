@@ -1,0 +1,62 @@
+namespace AcPhys.Spec.Dat;
+
+/// <summary>
+/// A Landblock record 0xAABBFFFF (dat-records.md, Landblock): hasObjects, 81 terrain words, 81 height bytes (bytes,
+/// not the WORDs ACE's comment claims), ALIGN 251 → 252. Scenes are written flat: terrain 0 and height index 0.
+/// </summary>
+public static class LandblockRecord
+{
+    /// <summary>The record size: 4 + 4 + 162 + 81 + 1 pad.</summary>
+    public const int Length = 252;
+
+    /// <summary>Writes a flat landblock (no objects, terrain 0, heights 0).</summary>
+    /// <param name="id">The record id (0xAABBFFFF).</param>
+    /// <returns>The bytes.</returns>
+    public static byte[] WriteFlat(uint id)
+    {
+        var w = new ByteWriter();
+        w.U32(id);
+        w.U32(0);
+        for (int i = 0; i < 81; i++)
+        {
+            w.U16(0);
+        }
+
+        for (int i = 0; i < 81; i++)
+        {
+            w.U8(0);
+        }
+
+        w.Align();
+        return w.ToArray();
+    }
+
+    /// <summary>Reads a landblock and checks it is flat (scenes carry no terrain).</summary>
+    /// <param name="data">The bytes.</param>
+    /// <param name="expectedId">The id.</param>
+    /// <exception cref="DatFormatException">Not a landblock of this id, not flat, or trailing bytes.</exception>
+    public static void ReadFlat(byte[] data, uint expectedId)
+    {
+        var r = new ByteReader(data, "Landblock " + RecordIds.Text(expectedId));
+        uint id = r.U32("id");
+        r.Require(id == expectedId, "id", 0, $"record id {RecordIds.Text(id)} is not its name {RecordIds.Text(expectedId)}");
+        uint hasObjects = r.U32("hasObjects");
+        r.Require(hasObjects == 0, "hasObjects", 4, $"{hasObjects}: scenes carry no landblock objects (expected 0)");
+        for (int i = 0; i < 81; i++)
+        {
+            int at = r.Position;
+            ushort t = r.U16($"terrain[{i}]");
+            r.Require(t == 0, $"terrain[{i}]", at, $"0x{t:X4}: scenes are flat (expected 0)");
+        }
+
+        for (int i = 0; i < 81; i++)
+        {
+            int at = r.Position;
+            byte h = r.U8($"height[{i}]");
+            r.Require(h == 0, $"height[{i}]", at, $"{h}: scenes are flat (expected 0)");
+        }
+
+        r.Align("height");
+        r.End();
+    }
+}
