@@ -20,7 +20,7 @@ public sealed class InProcessTests
         var run = Acphys.Run(["verify", "--impl", ExampleAdapter, "--cases", "500"]);
         Assert.True(run.Exit == 0, run.ToString());
         Assert.Contains("against example-dotnet;", run.Out, StringComparison.Ordinal);
-        Assert.Contains("verify: 31 invariants, 9 passed, 0 failed, 22 not tested", run.Out, StringComparison.Ordinal);
+        Assert.Contains("verify: 40 invariants, 10 passed, 0 failed, 30 not tested", run.Out, StringComparison.Ordinal);
         Assert.Contains("NOT TESTED COVERAGE: implementation lacks outside_cells", run.Out, StringComparison.Ordinal);
     }
 

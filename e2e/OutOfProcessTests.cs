@@ -16,7 +16,7 @@ public sealed class OutOfProcessTests
         Assert.True(run.Exit == 0, run.ToString());
         Assert.Contains(" 0 failed", run.Out, StringComparison.Ordinal);
         Assert.Contains("NOT TESTED HYSTERESIS", run.Out, StringComparison.Ordinal); // serve declares the retail pick
-        Assert.Contains("verify: 31 invariants, 29 passed, 0 failed, 2 not tested", run.Out, StringComparison.Ordinal); // scenes travel too
+        Assert.Contains("verify: 40 invariants, 38 passed, 0 failed, 2 not tested", run.Out, StringComparison.Ordinal); // scenes travel too
     }
 
     [Fact]
@@ -46,7 +46,7 @@ public sealed class OutOfProcessTests
         var run = Acphys.Run(["verify", "--impl-cmd", Acphys.PythonExample, "--cases", "400", "--timeout", "60"]);
         Assert.True(run.Exit == 0, run.ToString());
         Assert.Contains("against python-example;", run.Out, StringComparison.Ordinal);
-        Assert.Contains("verify: 31 invariants, 18 passed, 0 failed, 13 not tested", run.Out, StringComparison.Ordinal);
+        Assert.Contains("verify: 40 invariants, 21 passed, 0 failed, 19 not tested", run.Out, StringComparison.Ordinal);
         Assert.Contains("; lacks outside_cells_parts, find_cell_scene", run.Out, StringComparison.Ordinal);
         Assert.Contains("NOT TESTED INTERIOR-WINS: implementation lacks find_cell_scene", run.Out, StringComparison.Ordinal);
         Assert.Contains("[impl] acphys_impl.py: protocol 1", run.Err, StringComparison.Ordinal); // its stderr log is passed through
@@ -85,7 +85,7 @@ public sealed class OutOfProcessTests
     {
         var run = Acphys.Run(["verify", "--impl-cmd", Acphys.PythonExample + " --ops lcoord_to_gid,gid_to_lcoord", "--cases", "300", "--timeout", "60"]);
         Assert.True(run.Exit == 0, run.ToString());
-        Assert.Contains("verify: 31 invariants, 1 passed, 0 failed, 30 not tested", run.Out, StringComparison.Ordinal);
+        Assert.Contains("verify: 40 invariants, 1 passed, 0 failed, 39 not tested", run.Out, StringComparison.Ordinal);
         Assert.Contains("capabilities: offers gid_to_lcoord, lcoord_to_gid; lacks blockid_to_lcoord, inbound_valid_cellid,", run.Out, StringComparison.Ordinal);
         Assert.Contains("NOT TESTED COVERAGE: implementation lacks outside_cells", run.Out, StringComparison.Ordinal);
         Assert.Contains("NOT TESTED ADJUST-RANGE: implementation lacks adjust_to_outside", run.Out, StringComparison.Ordinal);

@@ -57,7 +57,7 @@ public sealed class WireTests
         Assert.StartsWith("{\"error\":\"unknown op", server.Answer("{\"op\":\"teleport\"}"), StringComparison.Ordinal);
         Assert.StartsWith("{\"error\":\"malformed request: not JSON", server.Answer("hello"), StringComparison.Ordinal);
         using var hello = JsonDocument.Parse(server.Answer("{\"op\":\"hello\",\"protocol\":1}"));
-        Assert.Equal(10, hello.RootElement.GetProperty("ops").GetArrayLength());
+        Assert.Equal(11, hello.RootElement.GetProperty("ops").GetArrayLength());
         Assert.StartsWith("{\"error\":\"protocol 2 not supported", server.Answer("{\"op\":\"hello\",\"protocol\":2}"), StringComparison.Ordinal);
     }
 
