@@ -30,7 +30,7 @@ internal sealed partial record SceneWalkCheck(IReadOnlyList<WalkStep> Trace, IRe
         var trace = SceneWalkRunner.Run(impl, sw);
         var perStep = trace.Select(_ => new List<Violation>()).ToList();
         var verdicts = new List<(Invariant, Outcome?)>();
-        foreach (var invariant in IndoorInvariants.All)
+        foreach (var invariant in InvariantCatalogue.SceneInvariants)
         {
             var outcome = invariant.IsTestable(impl) ? invariant.Check(impl, sw) : (Outcome?)null;
             verdicts.Add((invariant, outcome));

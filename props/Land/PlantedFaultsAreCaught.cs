@@ -1,3 +1,4 @@
+using AcPhys.Props.Indoor;
 using AcPhys.Props.Support;
 using AcPhys.Spec.Faults;
 using AcPhys.Spec.Invariants;
@@ -8,7 +9,8 @@ namespace AcPhys.Props.Land;
 
 /// <summary>
 /// Proof that every invariant bites: each catches at least one planted fault. That every fault is caught by the
-/// invariants it names is checked per known-bug catalogue entry (props/Mutation/KnownBugCatalogueTests.cs).
+/// invariants it names is checked per known-bug catalogue entry (props/Mutation/KnownBugCatalogueTests.cs). The exact
+/// indoor invariants also count their concrete bites with test adapters (props/Indoor/ExactBites.cs).
 /// </summary>
 public sealed class PlantedFaultsAreCaught(ITestOutputHelper output)
 {
@@ -26,6 +28,15 @@ public sealed class PlantedFaultsAreCaught(ITestOutputHelper output)
                 {
                     biters.Add(invariant.Id);
                 }
+            }
+        }
+
+        // Invariants whose bites are shown on concrete scenes by test adapters (props/Indoor/ExactBites.cs), not by planted faults.
+        foreach (var bite in ExactBites.All)
+        {
+            if (bite.Invariant.Check(bite.Defect, bite.Case).IsViolation)
+            {
+                biters.Add(bite.Invariant.Id);
             }
         }
 

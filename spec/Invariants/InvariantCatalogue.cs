@@ -8,7 +8,10 @@ namespace AcPhys.Spec.Invariants;
 public static class InvariantCatalogue
 {
     /// <summary>Gets every invariant, in catalogue order.</summary>
-    public static IReadOnlyList<Invariant> All { get; } = [.. LandInvariants.All, .. OutdoorInvariants.All, .. WalkInvariants.All, .. PartsInvariants.All, .. IndoorInvariants.All, .. ConformanceInvariants.All];
+    public static IReadOnlyList<Invariant> All { get; } = [.. LandInvariants.All, .. OutdoorInvariants.All, .. WalkInvariants.All, .. PartsInvariants.All, .. IndoorInvariants.All, .. IndoorExactInvariants.All, .. ConformanceInvariants.All];
+
+    /// <summary>Gets the scene invariants (over <see cref="SceneWalk"/>), conformance aside.</summary>
+    public static IReadOnlyList<Invariant<SceneWalk>> SceneInvariants { get; } = [.. IndoorInvariants.All, .. IndoorExactInvariants.All];
 
     /// <summary>Gets the invariants over <see cref="LandCase"/>.</summary>
     public static IReadOnlyList<Invariant<LandCase>> Land => LandInvariants.All;
@@ -102,7 +105,7 @@ public static class InvariantCatalogue
     /// <returns>The first violation, or null.</returns>
     public static Violation? CheckSceneWalk(ICellPhysics impl, SceneWalk sw)
     {
-        foreach (var invariant in IndoorInvariants.All)
+        foreach (var invariant in SceneInvariants)
         {
             if (invariant.IsTestable(impl) && invariant.Check(impl, sw) is { IsViolation: true } o)
             {
