@@ -34,7 +34,7 @@ public static class EstateRoute
                 {
                     var c = m.Centres[0];
                     float w = plan.Width;
-                    // Not symmetric about the stairwell's west face (x = c): no step lands in its tie band while the
+                    // Not symmetric about the stairwell's west face (0.1 W east of c): no step lands in its tie band while the
                     // stairwell is the current cell (retail keeps it there, first env hit; facts §4 step 4b).
                     var pts = new List<Vector3> { c + new Vector3(w * 0.3f, 0, 0), c - new Vector3(w * 0.27f, 0, 0) };
                     if (m.Doors.FirstOrDefault(x => x.Room == 0) is { } door)
@@ -58,7 +58,8 @@ public static class EstateRoute
         int e = EstateKit.Entry(plan, m.Doors.Count), x = EstateKit.Exit(plan, m.Doors.Count);
         var entry = m.Doors[e];
         var inside = new List<Vector3> { entry.Outside, entry.Point, m.Centres[entry.Room] };
-        int target = r.Route == SceneRoute.EnterAndBack ? Math.Abs(r.Target) % m.Centres.Count : m.Doors[x].Room;
+        bool back = r.Route == SceneRoute.EnterAndBack, stay = r.Route == SceneRoute.Enter;
+        int target = back || stay ? Math.Abs(r.Target) % m.Centres.Count : m.Doors[x].Room;
         var rooms = EstateGrid.Path(m.Positions, entry.Room, target, plan.UnloadedRoom) ?? [entry.Room];
         for (int i = 1; i < rooms.Count; i++)
         {
@@ -66,11 +67,11 @@ public static class EstateRoute
             inside.Add(m.Centres[rooms[i]]);
         }
 
-        if (r.Route == SceneRoute.EnterAndBack)
+        if (back)
         {
             inside.AddRange(Enumerable.Reverse(inside).Skip(1).ToList());
         }
-        else if (rooms[^1] == m.Doors[x].Room)
+        else if (!stay && rooms[^1] == m.Doors[x].Room)
         {
             inside.Add(m.Doors[x].Point);
             inside.Add(m.Doors[x].Outside);

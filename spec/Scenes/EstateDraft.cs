@@ -55,8 +55,15 @@ internal sealed class EstateDraft(LandblockId block, ushort baseLow, Frame frame
     }
 
     /// <summary>
-    /// Adds a stairwell over the east half of a grid room: a lower flight from the floor to 1 m into the storey, and an
-    /// upper landing in the east quarter up to the storey's ceiling. It overlaps the room and the storey, as retail
+    /// Where a stairwell starts across its room (fraction of the width): off the room's centre line, so that routes
+    /// through door and wall midpoints never run along its west face (in its tie band the stairwell, when current,
+    /// would be kept: facts §4 step 4b).
+    /// </summary>
+    public const float StairwellFrom = 0.6f;
+
+    /// <summary>
+    /// Adds a stairwell over the east 40 % of a grid room: a lower flight from the floor to 1 m into the storey, and an
+    /// upper landing in the east fifth up to the storey's ceiling. It overlaps the room and the storey, as retail
     /// stairwells do (the pick order decides, facts §4 step 4b).
     /// </summary>
     /// <param name="p">Grid position.</param>
@@ -68,8 +75,8 @@ internal sealed class EstateDraft(LandblockId block, ushort baseLow, Frame frame
         const float h = EstatePlan.Height;
         return Add(own ? new CellPlacement(c + new Vector3(width, depth, 0), 2) : default,
         [
-            (c + new Vector3(width / 2, 0, 0), c + new Vector3(width, depth, h + 1)),
-            (c + new Vector3(width * 0.75f, 0, h), c + new Vector3(width, depth, 2 * h)),
+            (c + new Vector3(width * StairwellFrom, 0, 0), c + new Vector3(width, depth, h + 1)),
+            (c + new Vector3(width * 0.8f, 0, h), c + new Vector3(width, depth, 2 * h)),
         ]);
     }
 

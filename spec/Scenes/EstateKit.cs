@@ -74,7 +74,7 @@ public static class EstateKit
             {
                 int s = main.Stairwell(at[0], plan.OwnFrames);
                 stairwellId = main.Id(s);
-                var face = main.Corner(at[0]) + new Vector3(plan.Width / 2, plan.Depth / 2, 0);
+                var face = main.Corner(at[0]) + new Vector3(plan.Width * EstateDraft.StairwellFrom, plan.Depth / 2, 0);
                 main.Link(0, s, face, -Vector3.UnitX);
                 main.Link(u, s, face, -Vector3.UnitX);
             }
