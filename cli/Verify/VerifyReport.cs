@@ -111,6 +111,21 @@ internal sealed class VerifyReport(VerifySettings settings, ICellPhysics impl)
         Terminal.Line();
         Terminal.Line("Boundary classes (generated cases; a failing invariant counts only up to its first failure):");
         Terminal.Out.Write(table);
+
+        // The domains' own classes (scene shapes, routes, estate classes ...): hits over the invariants that saw them.
+        var own = new Table().AddColumn("Case class")
+            .AddColumn(new TableColumn("Fewest hits").RightAligned())
+            .AddColumn(new TableColumn("Most hits").RightAligned())
+            .AddColumn(new TableColumn("Invariants").RightAligned());
+        foreach (var tag in tested.SelectMany(r => r.Classes.Keys).Where(t => !BoundaryCoverage.AllTags.Contains(t)).Distinct().Order(StringComparer.Ordinal))
+        {
+            var counts = tested.Where(r => r.Classes.ContainsKey(tag)).Select(r => r.Classes[tag]).ToArray();
+            own.AddRow(new Text(tag), new Text(Fmt.Count(counts.Min())), new Text(Fmt.Count(counts.Max())), new Text(Fmt.Count(counts.Length)));
+        }
+
+        Terminal.Line();
+        Terminal.Line("Case classes (the domains' own tags; generated cases):");
+        Terminal.Out.Write(own);
     }
 
     /// <summary>Writes why invariants were not tested.</summary>

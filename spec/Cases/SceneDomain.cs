@@ -23,6 +23,16 @@ public sealed class SceneDomain : ICaseDomain<SceneWalk>
 
         yield return "scene:" + r.Shape;
         yield return "route:" + r.Route;
+        if (r.Estate is not null)
+        {
+            foreach (var tag in EstateClasses.Of(r, w))
+            {
+                yield return tag;
+            }
+
+            yield break;
+        }
+
         if (r.Cottage is { } c)
         {
             var a = c.ToBlock(System.Numerics.Vector3.Zero);

@@ -31,6 +31,12 @@ public enum SceneRoute
 
     /// <summary>Along a dungeon chain and back.</summary>
     DungeonRunAndBack,
+
+    /// <summary>An estate: from its stairwell, where it overlaps room 0, west into room 0 and out of its door.</summary>
+    Stairwell,
+
+    /// <summary>An estate: along the lead-in dungeon from the next block, out of its exit, in by the entry door and out by another.</summary>
+    LeadIn,
 }
 
 /// <summary>
@@ -48,15 +54,28 @@ public enum SceneRoute
 /// <param name="Take">Steps kept (the shrinker cuts the tail).</param>
 public sealed record SceneRecipe(CottagePlan? Cottage, DungeonPlan? Dungeon, SceneRoute Route, int Target, float Radius, bool TwoSpheres, float StepMax, float Jitter, int Take)
 {
+    /// <summary>Gets the estate, or null (when set, it takes the place of the cottage and the dungeon).</summary>
+    public EstatePlan? Estate { get; init; }
+
+    /// <summary>Gets the number of spheres (1 to 3, at heights 0.6, 1.3, 1.9 m) with their own radii; 0 = <see cref="TwoSpheres"/> decides.</summary>
+    public int Spheres { get; init; }
+
+    /// <summary>Gets sphere 1's radius (with <see cref="Spheres"/> ≥ 2).</summary>
+    public float Radius1 { get; init; }
+
+    /// <summary>Gets sphere 2's radius (with <see cref="Spheres"/> = 3).</summary>
+    public float Radius2 { get; init; }
+
     /// <summary>Gets the shape class of the scene, for distributions.</summary>
-    public string Shape => Cottage is { } c ? $"cottage-{c.Rooms}{(c.Storey ? "+storey" : string.Empty)}" : $"dungeon-{Dungeon!.Cells}";
+    public string Shape => Estate is { } e ? $"estate-{e.Layout.ToString().ToLowerInvariant()}-{e.Rooms}" : Cottage is { } c ? $"cottage-{c.Rooms}{(c.Storey ? "+storey" : string.Empty)}" : $"dungeon-{Dungeon!.Cells}";
 
     /// <summary>Builds the case.</summary>
     /// <returns>The scene walk.</returns>
     public SceneWalk Build()
     {
-        var scene = Cottage is { } c ? SceneKit.Cottage(c) : SceneKit.Dungeon(Dungeon!);
-        var (startCell, points) = Cottage is { } plan ? CottageRoute(plan) : DungeonRoute(Dungeon!);
+        var model = Estate is { } e ? EstateKit.Build(e) : null;
+        var scene = model?.Scene ?? (Cottage is { } c ? SceneKit.Cottage(c) : SceneKit.Dungeon(Dungeon!));
+        var (startCell, points) = model is not null ? EstateRoute.Points(this, model) : Cottage is { } plan ? CottageRoute(plan) : DungeonRoute(Dungeon!);
         var steps = new List<Vector2>();
         float total = 0;
         for (int i = 1; i < points.Count; i++)
@@ -76,7 +95,7 @@ public sealed record SceneRecipe(CottagePlan? Cottage, DungeonPlan? Dungeon, Sce
             }
         }
 
-        if (Cottage is { LoadNeighbours: false } unloaded && LeavesBlock(points[0], steps.Take(Take)))
+        if (model is null && Cottage is { LoadNeighbours: false } unloaded && LeavesBlock(points[0], steps.Take(Take)))
         {
             // A client always has the blocks around it loaded, so a walk whose centre crosses into an unloaded
             // neighbour block is outside the model (leaving a room through its door onto unloaded land, the body is
@@ -88,10 +107,12 @@ public sealed record SceneRecipe(CottagePlan? Cottage, DungeonPlan? Dungeon, Sce
         // Likewise a walk has no business off the map: a cottage at the west edge, yawed so that its rooms overhang the
         // edge, walked through and out of its back door onto no land is lost for good. The walk stops before its centre
         // would leave the map (found by the scene fuzz target).
-        var home = Cottage?.Block ?? Dungeon!.Block;
+        var home = model is not null ? startCell.Landblock : Cottage?.Block ?? Dungeon!.Block;
         int take = Math.Min(Take, OnMapSteps(new Vector2(192f * home.X, 192f * home.Y), points[0], steps));
 
-        BodySphere[] body = TwoSpheres
+        BodySphere[] body = Spheres > 0
+            ? [.. new[] { new BodySphere(new Vector3(0, 0, 0.6f), Radius), new BodySphere(new Vector3(0, 0, 1.3f), Radius1), new BodySphere(new Vector3(0, 0, 1.9f), Radius2) }.Take(Math.Min(Spheres, 3))]
+            : TwoSpheres
             ? [new BodySphere(new Vector3(0, 0, 0.6f), Radius), new BodySphere(new Vector3(0, 0, 1.3f), Radius)]
             : [new BodySphere(new Vector3(0, 0, 0.6f), Radius)];
         var walk = new Walk(startCell, points[0], body, [.. steps.Take(take)]);
@@ -105,8 +126,9 @@ public sealed record SceneRecipe(CottagePlan? Cottage, DungeonPlan? Dungeon, Sce
 
     /// <inheritdoc/>
     public override string ToString() =>
-        string.Create(CultureInfo.InvariantCulture, $"{Shape} {Route} target {Target} r={Radius}{(TwoSpheres ? " x2" : string.Empty)} step≤{StepMax} jitter {Jitter} take {Take}") +
-        (Cottage is { } c
+        string.Create(CultureInfo.InvariantCulture, $"{Shape} {Route} target {Target} r={Radius}{(Spheres > 0 ? $" spheres {Spheres} r1={Radius1} r2={Radius2}" : TwoSpheres ? " x2" : string.Empty)} step≤{StepMax} jitter {Jitter} take {Take}") +
+        (Estate is { } e ? " " + e
+        : Cottage is { } c
             ? string.Create(CultureInfo.InvariantCulture, $" at ({c.WorldX:R}, {c.WorldY:R}) yaw {c.Yaw} {c.Width}x{c.Depth} flips {c.Flips}{(c.BackDoor ? " back-door" : string.Empty)}{(c.LoadNeighbours ? string.Empty : " neighbours-unloaded")}")
             : string.Create(CultureInfo.InvariantCulture, $" at ({Dungeon!.WorldX:R}, {Dungeon.WorldY:R}) length {Dungeon.Length} unloaded {Dungeon.Unloaded} flips {Dungeon.Flips}"));
 

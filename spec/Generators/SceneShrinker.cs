@@ -39,6 +39,14 @@ public static class SceneShrinker
             yield return r with { Take = steps - 1 };
         }
 
+        if (r.Estate is not null)
+        {
+            foreach (var e in EstateShrinker.Recipes(r))
+            {
+                yield return e;
+            }
+        }
+
         if (r.Cottage is { } c)
         {
             if (c.Rooms > 1)
@@ -105,7 +113,7 @@ public static class SceneShrinker
             }
         }
 
-        if (r.TwoSpheres)
+        if (r.TwoSpheres && r.Estate is null)
         {
             yield return r with { TwoSpheres = false };
         }

@@ -82,7 +82,7 @@ public static class IndoorInvariants
     /// <summary>PORTAL-TRANSIT.</summary>
     public static readonly Invariant<SceneWalk> PortalTransit = new(
         "PORTAL-TRANSIT",
-        "With steps no longer than the radius: a centre inside a loaded env cell by 1 mm on two steps running is in that cell after the second (no absorbing outdoor state), except while the position is a land cell framed in another block than the cell (facts §6.11: retail does not re-frame the building test) or the cell is not directly behind a building portal whose building's land cell is a candidate (facts §5.3: a building is reached only through the land cell it is attached to); a centre clear of every cell on two steps running over loaded land, queried from a loaded cell, is in a land cell (no absorbing indoor state); neither clause applies while the client still holds a cell it lost for a reason NEVER-NULL excuses; and a load hint for an unloaded cell behind the position's portal appears exactly when a sphere reaches past r + EPS toward it.",
+        "With steps no longer than the radius: a centre inside a loaded env cell by 1 mm on two steps running is in that cell after the second (no absorbing outdoor state), except while the position is a land cell framed in another block than the cell (facts §6.11: retail does not re-frame the building test) or the cell is not directly behind a valid building portal whose building's land cell is a candidate (facts §5.3: a building is reached only through the land cell it is attached to); a centre clear of every cell on two steps running over loaded land, queried from a loaded cell, is in a land cell (no absorbing indoor state); neither clause applies while the client still holds a cell it lost for a reason NEVER-NULL excuses; and a load hint for an unloaded cell behind the position's portal appears exactly when a sphere reaches past r + EPS toward it.",
         "facts §5.1, §5.3, §5.4, §6.9, §6.11",
         Op.FindCellScene,
         SceneDomain.Instance,
@@ -160,7 +160,7 @@ public static class IndoorInvariants
     /// <summary>NO-TUNNEL.</summary>
     public static readonly Invariant<SceneWalk> NoTunnel = new(
         "NO-TUNNEL",
-        "With steps no longer than the radius, the current cell changes only to a land cell of the 3 × 3 neighbourhood (from land), a portal-linked env cell (from an env cell), a land cell (from an env cell with an exit), or a cell behind a building portal or portal-linked to one (from land: the transit closure runs within one query); not checked while the client still holds a cell it lost for a reason NEVER-NULL excuses.",
+        "With steps no longer than the radius, the current cell changes only to a land cell of the 3 × 3 neighbourhood (from land), a portal-linked env cell or one linked to such a neighbour (from an env cell: two portals in one query, through a thin cell), a land cell (from an env cell with an exit, or next to one), or a cell behind a building portal or portal-linked to one (from land: the transit closure runs within one query); not checked while the client still holds a cell it lost for a reason NEVER-NULL excuses.",
         "facts §3.2, §5.1, §5.3",
         Op.FindCellScene,
         SceneDomain.Instance,
@@ -545,8 +545,9 @@ public static class IndoorInvariants
         return false;
     }
 
+    // Facts §5.3: a building portal with the invalid marker (portal 0xFFFF) is skipped, so it leads nowhere.
     private static bool BehindBuildingPortal(Scene scene, CellId cell) =>
-        scene.Buildings.Any(b => b.Block == cell.Landblock && b.Portals.Any(p => p.Cell == cell.Low));
+        scene.Buildings.Any(b => b.Block == cell.Landblock && b.Portals.Any(p => p.Cell == cell.Low && p.Portal != BldPortal.None));
 
     private static bool Linked(Scene scene, CellId a, CellId b)
     {
@@ -559,7 +560,9 @@ public static class IndoorInvariants
 
         if (a.IsEnv && b.IsLand)
         {
-            return SceneOracle.Cell(scene, a) is { } cell && cell.Portals.Any(p => p.IsExit);
+            // Facts §4 step 4a: the closure runs within one query, so a step may cross two portals (a thin doorway
+            // cell, 0.25 m, between a room and the exit): an exit of the cell or of a portal neighbour will do.
+            return Neighbourhood(scene, a).Any(id => SceneOracle.Cell(scene, id) is { } cell && cell.Portals.Any(p => p.IsExit));
         }
 
         if (a.IsLand && b.IsEnv)
@@ -569,9 +572,17 @@ public static class IndoorInvariants
             return scene.Buildings.Any(bl => bl.Block == b.Landblock && Reaches(scene, bl, b));
         }
 
-        return a.Landblock == b.Landblock
-            && ((SceneOracle.Cell(scene, a)?.Portals.Any(p => p.Other == b.Low) ?? false) || (SceneOracle.Cell(scene, b)?.Portals.Any(p => p.Other == a.Low) ?? false));
+        // Facts §4 step 4a: two portals in one query (through a thin cell) — b a neighbour of a or of a neighbour of a.
+        return a.Landblock == b.Landblock && Neighbourhood(scene, a).Any(m => m != a && (m == b || PortalLinked(scene, m, b)));
     }
+
+    private static bool PortalLinked(Scene scene, CellId a, CellId b) =>
+        a.Landblock == b.Landblock
+        && ((SceneOracle.Cell(scene, a)?.Portals.Any(p => p.Other == b.Low) ?? false) || (SceneOracle.Cell(scene, b)?.Portals.Any(p => p.Other == a.Low) ?? false));
+
+    // An env cell and the cells portal-linked to it.
+    private static IEnumerable<CellId> Neighbourhood(Scene scene, CellId a) =>
+        scene.Cells.Where(c => c.Id == a || PortalLinked(scene, a, c.Id)).Select(c => c.Id).Append(a).Distinct();
 
     // The position's own portals into unloaded cells: a hint iff some sphere reaches past r + EPS toward the other side,
     // the side read from the geometry (the cell's box centre), not from PortalSide.

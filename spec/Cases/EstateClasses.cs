@@ -1,0 +1,135 @@
+using System.Numerics;
+using AcPhys.Core;
+using AcPhys.Spec.Scenes;
+
+namespace AcPhys.Spec.Cases;
+
+/// <summary>The distribution classes of an estate walk (shown by the verify table and FsCheck's Collect).</summary>
+public static class EstateClasses
+{
+    /// <summary>Gets every estate class tag, in report order.</summary>
+    public static IReadOnlyList<string> All { get; } =
+    [
+        "frame:per-cell", "frame:general-rotation", "doors:1", "doors:2", "doors:3", "doors:4", "door:invalid-marker", "graph:branch",
+        "graph:loop", "storey:stacked", "cell:overlap-stairwell", "cell:multi-piece", "buildings:2+", "place:block-corner",
+        "place:building-across-line", "mover:neighbour-block", "dungeon:cross-block", "cell:unloaded-middle", "body:3-spheres",
+        "body:mixed-radii", "step:two-portals", "see:partial",
+    ];
+
+    /// <summary>Returns the classes of an estate walk.</summary>
+    /// <param name="r">The recipe (with an estate).</param>
+    /// <param name="w">The built walk.</param>
+    /// <returns>Tags.</returns>
+    public static IEnumerable<string> Of(SceneRecipe r, SceneWalk w)
+    {
+        var p = r.Estate!;
+        var scene = w.Scene;
+        var home = scene.Cells.Where(c => c.Id.Landblock == p.Block && c.Id.Low < 0x110).ToList();
+        if (p.OwnFrames && home.Select(c => (c.Origin, c.Rotation)).Distinct().Count() > 1)
+        {
+            yield return "frame:per-cell";
+        }
+
+        if (p.Tilt != Vector2.Zero)
+        {
+            yield return "frame:general-rotation";
+        }
+
+        var main = scene.Buildings[0];
+        yield return $"doors:{main.Portals.Count}";
+        if (main.Portals.Any(b => b.Portal == 0xFFFF))
+        {
+            yield return "door:invalid-marker";
+        }
+
+        if (p.Rooms >= 4)
+        {
+            yield return p.Layout switch { EstateLayout.Branch => "graph:branch", EstateLayout.Ring => "graph:loop", _ => "graph:row" };
+        }
+
+        if (p.Storey)
+        {
+            yield return "storey:stacked";
+        }
+
+        if (p.Storey && p.Stairwell)
+        {
+            yield return "cell:overlap-stairwell";
+        }
+
+        if (home.Any(c => c.Pieces.Count > 1))
+        {
+            yield return "cell:multi-piece";
+        }
+
+        if (scene.Buildings.Count >= 2)
+        {
+            yield return "buildings:2+";
+        }
+
+        static double Line(double v) => Math.Abs(v - (192 * Math.Round(v / 192)));
+        if (Line(p.WorldX) <= 30 && Line(p.WorldY) <= 30)
+        {
+            yield return "place:block-corner";
+        }
+
+        if (AcrossLine(p, home))
+        {
+            yield return "place:building-across-line";
+        }
+
+        if (w.Walk.StartCell.Landblock != p.Block)
+        {
+            yield return "mover:neighbour-block";
+        }
+
+        if (p.Lead > 0)
+        {
+            yield return "dungeon:cross-block";
+        }
+
+        if (scene.UnloadedCells.Count > 0)
+        {
+            yield return "cell:unloaded-middle";
+        }
+
+        var body = w.Walk.Body;
+        if (body.Count == 3)
+        {
+            yield return "body:3-spheres";
+        }
+
+        if (body.Select(b => b.Radius).Distinct().Count() > 1)
+        {
+            yield return "body:mixed-radii";
+        }
+
+        if (p.Vestibule && w.Walk.Steps.Any(s => s.Length() > EstatePlan.VestibuleDepth))
+        {
+            yield return "step:two-portals";
+        }
+
+        if (p.SeeDepth > 0 && home.Count > p.SeeDepth + 1)
+        {
+            yield return "see:partial";
+        }
+    }
+
+    // Whether the building's cells reach into more than one block (their pieces' corners, world metres).
+    private static bool AcrossLine(EstatePlan p, List<SceneCell> cells)
+    {
+        var blocks = new HashSet<(double, double)>();
+        foreach (var c in cells)
+        {
+            var frame = new Frame(c.Origin, c.Rotation);
+            var b = c.Pieces[0].ToConvex().Bounds;
+            foreach (var q in new[] { b.Min, b.Max, new Vector3(b.Min.X, b.Max.Y, 0), new Vector3(b.Max.X, b.Min.Y, 0) })
+            {
+                var g = frame.LocalToGlobal(q);
+                blocks.Add((Math.Floor(((192.0 * p.Block.X) + g.X) / 192), Math.Floor(((192.0 * p.Block.Y) + g.Y) / 192)));
+            }
+        }
+
+        return blocks.Count > 1;
+    }
+}

@@ -1,0 +1,92 @@
+using System.Numerics;
+using AcPhys.Core;
+using AcPhys.Spec.Scenes;
+
+namespace AcPhys.Spec.Cases;
+
+/// <summary>
+/// The routes of estate walks: in by the entry door (always a valid building portal), through the rooms on the
+/// shortest path over shared walls (past the unloaded room), out by another door; in and back; around the storey;
+/// from the stairwell; or from the lead-in dungeon in the next block. Points pass only through door and wall
+/// midpoints, so the walk never crosses a wall without a portal.
+/// </summary>
+public static class EstateRoute
+{
+    /// <summary>Returns the start cell and the route's points in the start cell's block frame.</summary>
+    /// <param name="r">The recipe.</param>
+    /// <param name="m">The estate.</param>
+    /// <returns>The start cell and points.</returns>
+    public static (CellId Start, List<Vector3> Points) Points(SceneRecipe r, EstateModel m)
+    {
+        var plan = m.Plan;
+        var home = plan.Block.BlockCell;
+        switch (r.Route)
+        {
+            case SceneRoute.Storey when !m.StoreyId.IsNone:
+                {
+                    var c = m.Centres[0];
+                    float w = plan.Width, d = plan.Depth, z = EstatePlan.Floor + EstatePlan.Height + 0.5f;
+                    var pts = new[] { c, c + new Vector3(-w / 4, -d / 4, 0), c + new Vector3(w / 4, d * 0.3f, 0), c };
+                    return (m.StoreyId, [.. pts.Select(p => m.ToBlock(p) with { Z = z })]);
+                }
+
+            case SceneRoute.Stairwell when !m.StairwellId.IsNone:
+                {
+                    var c = m.Centres[0];
+                    float w = plan.Width;
+                    // Not symmetric about the stairwell's west face (0.1 W east of c): no step lands in its tie band while the
+                    // stairwell is the current cell (retail keeps it there, first env hit; facts §4 step 4b).
+                    var pts = new List<Vector3> { c + new Vector3(w * 0.3f, 0, 0), c - new Vector3(w * 0.27f, 0, 0) };
+                    if (m.Doors.FirstOrDefault(x => x.Room == 0) is { } door)
+                    {
+                        pts.Add(door.Point);
+                        pts.Add(door.Outside);
+                    }
+
+                    return (m.StairwellId, [.. pts.Select(m.ToBlock)]);
+                }
+
+            default:
+                break;
+        }
+
+        if (m.Doors.Count == 0)
+        {
+            return (home, [m.ToBlock(m.Centres[0] + new Vector3(0, -plan.Depth, 0)), m.ToBlock(m.Centres[0] + new Vector3(0, -plan.Depth - 2, 0))]);
+        }
+
+        int e = EstateKit.Entry(plan, m.Doors.Count), x = EstateKit.Exit(plan, m.Doors.Count);
+        var entry = m.Doors[e];
+        var inside = new List<Vector3> { entry.Outside, entry.Point, m.Centres[entry.Room] };
+        bool back = r.Route == SceneRoute.EnterAndBack, stay = r.Route == SceneRoute.Enter;
+        int target = back || stay ? Math.Abs(r.Target) % m.Centres.Count : m.Doors[x].Room;
+        var rooms = EstateGrid.Path(m.Positions, entry.Room, target, plan.UnloadedRoom) ?? [entry.Room];
+        for (int i = 1; i < rooms.Count; i++)
+        {
+            inside.Add(m.Wall(rooms[i - 1], rooms[i]));
+            inside.Add(m.Centres[rooms[i]]);
+        }
+
+        if (back)
+        {
+            inside.AddRange(Enumerable.Reverse(inside).Skip(1).ToList());
+        }
+        else if (!stay && rooms[^1] == m.Doors[x].Room)
+        {
+            inside.Add(m.Doors[x].Point);
+            inside.Add(m.Doors[x].Outside);
+        }
+
+        var points = inside.Select(m.ToBlock).ToList();
+        if (r.Route == SceneRoute.LeadIn && m.LeadCentres.Count > 0)
+        {
+            // The lead-in's block frame is one block west: building-block points move by +192 in x.
+            var shift = new Vector3(192, 0, 0);
+            var lead = m.LeadCentres.ToList();
+            lead.Add(lead[^1] + new Vector3(3 + 1.5f, 0, 0));
+            return (m.LeadStart, [.. lead, .. points.Select(p => p + shift)]);
+        }
+
+        return (home, points);
+    }
+}
