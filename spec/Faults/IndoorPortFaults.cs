@@ -12,20 +12,20 @@ public static class IndoorPortFaults
         "neighbour-wrong-frame",
         "a portal neighbour's volume is tested with the sphere mapped into the walked cell's frame instead of the neighbour's",
         "facts §5.1, §5.8: the exit and load-hint tests use this cell's frame, the neighbour test the neighbour's; a port hoists one GlobalToLocal out of the portal loop. Invisible while every cell of a building shares one frame.",
-        []);
+        ["PORTAL-TRANSIT", "ENTER-EXIT", "NEVER-NULL", "SCENE-SOUNDNESS", "NEIGHBOURS-COMPLETE", "ENV-CANDIDATE-JUSTIFIED", "FIND-CELL-CONFORMANCE"]);
 
     /// <summary>Building entry through the first building portal only.</summary>
     public static readonly PlantedFault BuildingFirstPortalOnly = new(
         "building-first-portal-only",
         "building entry looks only at the building's first building portal (a loader keeps one door per building)",
         "facts §5.3: find_building_transit_cells tries every BldPortal in list order; a port that models \"the door\" of a building never enters the room behind a back door from outside.",
-        ["FIND-CELL-CONFORMANCE"]);
+        ["PORTAL-TRANSIT", "BUILDING-ENTRY-COMPLETE", "FIND-CELL-CONFORMANCE"]);
 
     /// <summary>Building entry stops at the first room.</summary>
     public static readonly PlantedFault BuildingStopFirstRoom = new(
         "building-stop-first-room",
         "building entry breaks out of the building-portal loop at the first room it enters",
-        "facts §5.3: retail stops at the first hit of the sphere loop inside check_building_transit, not of the portal loop; a port moved the break one loop out. Equivalent while the rooms behind two doors are portal-linked (the closure adds the second).",
+        "facts §5.3: retail stops at the first hit of the sphere loop inside check_building_transit, not of the portal loop; a port moved the break one loop out. Equivalent while the rooms behind two doors are portal-linked (the closure adds the second, in the same order): every generated estate links every shared wall, so it is not caught yet; it needs two rooms with their own doors and a sealed wall between them (a duplex) and a walk along the facade.",
         []);
 
     /// <summary>Transit closure over a snapshot.</summary>
@@ -33,34 +33,34 @@ public static class IndoorPortFaults
         "snapshot-closure",
         "the transit closure walks a snapshot of the candidate array (count read once) instead of the growing array",
         "facts §4 step 4a: the count is re-read each time, so cells added during the walk are walked too; the seed pseudocode's comment \"snapshot — cells may be added during iteration\" invites reading it once, and a room entered from land is never walked (its exits and neighbours are lost).",
-        ["FIND-CELL-CONFORMANCE"]);
+        ["PORTAL-TRANSIT", "ENTER-EXIT", "NEVER-NULL", "NEIGHBOURS-COMPLETE", "LAND-VIA-EXIT", "FIND-CELL-CONFORMANCE"]);
 
     /// <summary>Exit straddle test without a lower bound.</summary>
     public static readonly PlantedFault ExitStraddleOneSided = new(
         "exit-straddle-one-sided",
         "the exit-portal straddle test is only d < r + EPS (no lower bound), so land cells are pulled in deep inside a room",
         "facts §5.1, §6.9: an exit triggers only while a sphere straddles the plane, −R < d < R; a port wrote the one bound it thought of, so every sphere on the negative side adds the outdoor cells.",
-        ["FIND-CELL-CONFORMANCE"]);
+        ["LAND-VIA-EXIT", "FIND-CELL-CONFORMANCE"]);
 
     /// <summary>Invalid building portal entered.</summary>
     public static readonly PlantedFault InvalidBldPortalEntered = new(
         "invalid-bld-portal-entered",
         "a building portal whose OtherPortalId is 0xFFFF (no portal) is entered anyway",
         "facts §5.3: check_building_transit returns at once for portalId 0xFFFF (retail stores it sign-extended and tests ≥ 0); a port that reads it as unsigned and never uses the id drops the test.",
-        []);
+        ["ENV-CANDIDATE-JUSTIFIED", "FIND-CELL-CONFORMANCE"]);
 
     /// <summary>Loaded neighbour added by the plane test.</summary>
     public static readonly PlantedFault NeighbourByPlane = new(
         "neighbour-by-plane",
         "a loaded neighbour is added when a sphere reaches its portal's plane (the load-hint test reused), its volume never tested",
         "facts §5.1: a loaded neighbour needs sphere_intersects_cell (unpadded radius, the BSP's 0.01), only an unresolvable one the plane test (R = r + EPS); a port merged the two branches.",
-        ["FIND-CELL-CONFORMANCE"]);
+        ["SCENE-SOUNDNESS", "NEIGHBOURS-COMPLETE", "ENV-CANDIDATE-JUSTIFIED", "FIND-CELL-CONFORMANCE"]);
 
     /// <summary>Negative BSP children walked.</summary>
     public static readonly PlantedFault WalksNegativeChildren = new(
         "walks-negative-children",
         "the cell queries walk the whole BSP (every piece of a multi-piece cell), not only the positive chain",
-        "facts §5.7, §6.16: all three cell queries follow the positive-child chain and ignore negative children, so a multi-piece cell answers for its first piece; a port wrote the textbook BSP traversal. (Replaces the brief's first-piece-only, which is exactly retail.)",
+        "facts §5.7, §6.16: all three cell queries follow the positive-child chain and ignore negative children, so a multi-piece cell answers for its first piece; a port wrote the textbook BSP traversal. (Replaces the brief's first-piece-only, which is exactly retail.) Not caught yet: generated walks keep every sphere within reach of piece 0 of an L room, so the union never shows; it needs walks passing an L room's second piece from outside or from a neighbour.",
         []);
 
     /// <summary>Interior pick keeps the last env hit.</summary>
@@ -68,14 +68,14 @@ public static class IndoorPortFaults
         "pick-last-env",
         "the interior pick keeps the last env cell containing sphere 0's centre instead of the first",
         "facts §4 step 4b, §6.6: the first env hit wins (ACE returns at once), the last land hit wins; a port applied the outdoor last-wins rule to both. Visible where cells overlap: a shared wall within EPS, a stairwell.",
-        ["FIND-CELL-CONFORMANCE"]);
+        ["PORTAL-TRANSIT", "PICK-FIRST-ENV", "FIND-CELL-CONFORMANCE"]);
 
     /// <summary>Pick by the last sphere.</summary>
     public static readonly PlantedFault PickLastSphere = new(
         "pick-last-sphere",
         "the containing pick tests the last sphere's centre instead of sphere 0's",
         "facts §4 step 4b, §6.8: only sphere 0 decides the containing cell; a port's loop variable leaked out of the sphere loop.",
-        []);
+        ["PORTAL-TRANSIT", "CONTAINING-CONTAINS", "PICK-FIRST-ENV", "FIND-CELL-CONFORMANCE"]);
 
     /// <summary>Filter drops load hints.</summary>
     public static readonly PlantedFault FilterDropsHints = new(
@@ -89,7 +89,7 @@ public static class IndoorPortFaults
         "hits-interior-unset",
         "building entry does not set HitsInteriorCell (only an indoor seed or an interior pick does)",
         "facts §4 outputs, §5.3: check_building_transit sets path.HitsInteriorCell on entry; a port that reads the flag as \"the body is indoors\" sets it only from the pick, so building collision keeps its centre-solid test while a body straddles the door.",
-        ["FIND-CELL-CONFORMANCE"]);
+        ["HITS-INTERIOR", "FIND-CELL-CONFORMANCE"]);
 
     /// <summary>Close treated as outside.</summary>
     public static readonly PlantedFault CloseIsOutside = new(
@@ -103,21 +103,21 @@ public static class IndoorPortFaults
         "sphere-test-unpadded",
         "sphere_intersects_cell without the +0.01 radius padding",
         "facts §5.7, §6.10: R = r + 0.01 inside sphere_intersects_cell_bsp (not EPS); a port kept \"radius not padded\" of the callers and dropped the BSP's own padding, so a room is entered 1 cm late.",
-        ["FIND-CELL-CONFORMANCE"]);
+        ["NEIGHBOURS-COMPLETE", "BUILDING-ENTRY-COMPLETE", "FIND-CELL-CONFORMANCE"]);
 
     /// <summary>Transit and building entry by sphere 0 only.</summary>
     public static readonly PlantedFault TransitSphere0Only = new(
         "transit-sphere0-only",
         "env transit and building entry test only sphere 0",
         "facts §6.8: only sphere 0 decides the pick, but all spheres decide membership; a port applied the pick's rule to the transit loops, so a two-sphere body's head enters a room its feet have not reached without the room.",
-        []);
+        ["NEIGHBOURS-COMPLETE", "BUILDING-ENTRY-COMPLETE", "LAND-VIA-EXIT", "FIND-CELL-CONFORMANCE"]);
 
     /// <summary>Pick before the transit closure.</summary>
     public static readonly PlantedFault PickBeforeTransit = new(
         "pick-before-transit",
         "the containing pick runs on the seeded array, before the transit closure",
         "facts §4 step 4: the pick (4b) runs after the closure (4a); a port computed \"the cell we start in\" right after seeding, so a room entered from land or a neighbour reached through a portal is never picked (absorbing states).",
-        ["INTERIOR-WINS", "PORTAL-TRANSIT", "NEVER-NULL", "FIND-CELL-CONFORMANCE"]);
+        ["INTERIOR-WINS", "PORTAL-TRANSIT", "NEVER-NULL", "PICK-FIRST-ENV", "FIND-CELL-CONFORMANCE"]);
 
     /// <summary>Load hint by straddle.</summary>
     public static readonly PlantedFault HintStraddleOnly = new(
