@@ -80,7 +80,7 @@ public sealed class ConformanceBites
     }
 
     // Reports every load hint as a loaded cell.
-    private sealed class FlipHints : Wrapped
+    private sealed class FlipHints : Forwarding
     {
         public FlipHints()
             : base(ReferenceAdapter.Instance)
@@ -95,7 +95,7 @@ public sealed class ConformanceBites
     }
 
     // Another adapter's behaviour under another declaration.
-    private sealed class Undeclared(ICellPhysics inner, PickPolicy declared) : Wrapped(inner)
+    private sealed class Undeclared(ICellPhysics inner, PickPolicy declared) : Forwarding(inner)
     {
         public bool DeclaresRetailArithmetic { get; init; }
 

@@ -51,39 +51,15 @@ internal sealed record SceneQueryAnswer(Scene Scene, CellId Position, IReadOnlyL
 /// </summary>
 /// <param name="defect">What is wrong, for the adapter's name.</param>
 /// <param name="apply">The defect: the query and the reference's answer to the defective answer.</param>
-internal sealed class DefectiveSceneAdapter(string defect, Func<SceneQueryAnswer, FindCellResult> apply) : ICellPhysics
+internal sealed class DefectiveSceneAdapter(string defect, Func<SceneQueryAnswer, FindCellResult> apply) : Support.Forwarding(ReferenceAdapter.Instance)
 {
-    private static readonly ReferenceAdapter Reference = ReferenceAdapter.Instance;
+    public override string Name => "reference with " + defect;
 
-    public string Name => "reference with " + defect;
+    public override PickPolicy Pick => PickPolicy.Retail;
 
-    public Op Ops => Reference.Ops;
-
-    public PickPolicy Pick => PickPolicy.Retail;
-
-    public bool BlockIdToLcoord(CellId id, out Lcoord lcoord) => Reference.BlockIdToLcoord(id, out lcoord);
-
-    public bool GidToLcoord(CellId id, out Lcoord lcoord) => Reference.GidToLcoord(id, out lcoord);
-
-    public CellId LcoordToGid(int x, int y) => Reference.LcoordToGid(x, y);
-
-    public bool InboundValidCellId(CellId id) => Reference.InboundValidCellId(id);
-
-    public bool GetOutsideLcoord(CellId id, float x, float y, out Lcoord lcoord) => Reference.GetOutsideLcoord(id, x, y, out lcoord);
-
-    public AdjustResult AdjustToOutside(CellId id, float x, float y) => Reference.AdjustToOutside(id, x, y);
-
-    public IReadOnlyList<CellId> OutsideCells(CellId cell, IReadOnlyList<Sphere> spheres) => Reference.OutsideCells(cell, spheres);
-
-    public FindCellResult FindCell(CellId cell, IReadOnlyList<Sphere> spheres, CellId current) => Reference.FindCell(cell, spheres, current);
-
-    public IReadOnlyList<CellId> OutsideCellsParts(IReadOnlyList<Part> parts) => Reference.OutsideCellsParts(parts);
-
-    public FindCellResult FindCell(Scene? scene, CellId cell, IReadOnlyList<Sphere> spheres, CellId current) => FindCell(scene, cell, spheres, current, false);
-
-    public FindCellResult FindCell(Scene? scene, CellId cell, IReadOnlyList<Sphere> spheres, CellId current, bool loadCells)
+    public override FindCellResult FindCell(Scene? scene, CellId cell, IReadOnlyList<Sphere> spheres, CellId current, bool loadCells)
     {
-        var answer = Reference.FindCell(scene, cell, spheres, current, loadCells);
+        var answer = Inner.FindCell(scene, cell, spheres, current, loadCells);
         return scene is null ? answer : apply(new SceneQueryAnswer(scene, cell, spheres, loadCells, answer));
     }
 }

@@ -2,13 +2,13 @@ using AcPhys.Core;
 using AcPhys.Spec.Adapters;
 using AcPhys.Spec.Scenes;
 
-namespace AcPhys.Props.ConformanceChecks;
+namespace AcPhys.Props.Support;
 
 /// <summary>An adapter that forwards everything to another; tests override the one behaviour they change.</summary>
 /// <param name="inner">The adapter forwarded to.</param>
-internal abstract class Wrapped(ICellPhysics inner) : ICellPhysics
+internal abstract class Forwarding(ICellPhysics inner) : ICellPhysics
 {
-    public string Name => "wrapped " + Inner.Name;
+    public virtual string Name => "wrapped " + Inner.Name;
 
     public Op Ops => Inner.Ops;
 
