@@ -32,8 +32,7 @@ public static class Conformance
     /// <returns>The reference. With ACE's stale cells declared, the reference resets its array (the comparison is then a superset test).</returns>
     public static ReferenceAdapter ReferenceFor(ICellPhysics impl)
     {
-        var indoor = impl.Indoor with { AceKeepsStaleCells = false };
-        return References.GetOrAdd((impl.Pick, indoor, impl.Outdoor), k => new ReferenceAdapter(k.Item1, outdoor: k.Item3) { Indoor = k.Item2 });
+        return Reference(impl, impl.Outdoor);
     }
 
     /// <summary>
@@ -46,8 +45,7 @@ public static class Conformance
     public static ReferenceAdapter AlternateFor(ICellPhysics impl)
     {
         var other = impl.Outdoor with { Precision = impl.Outdoor.Precision == OutdoorPrecision.Double ? OutdoorPrecision.Float32 : OutdoorPrecision.Double };
-        var indoor = impl.Indoor with { AceKeepsStaleCells = false };
-        return References.GetOrAdd((impl.Pick, indoor, other), k => new ReferenceAdapter(k.Item1, outdoor: k.Item3) { Indoor = k.Item2 });
+        return Reference(impl, other);
     }
 
     /// <summary>
@@ -104,6 +102,10 @@ public static class Conformance
         yield return [.. spheres.Select(s => new Sphere(s.Center, s.Radius + step))];
         yield return [.. spheres.Select(s => new Sphere(s.Center, MathF.Max(0, s.Radius - step)))];
     }
+
+    // The reference with the implementation's pick and indoor fidelity (its array reset: see ReferenceFor) and an outdoor fidelity.
+    private static ReferenceAdapter Reference(ICellPhysics impl, OutdoorFidelity outdoor) =>
+        References.GetOrAdd((impl.Pick, impl.Indoor with { AceKeepsStaleCells = false }, outdoor), k => new ReferenceAdapter(k.Item1, outdoor: k.Item3) { Indoor = k.Item2 });
 
     /// <summary>
     /// Compares a find_cell answer with the reference's: the candidates in insertion order with their load-hint flags,

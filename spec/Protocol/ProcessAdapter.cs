@@ -225,8 +225,7 @@ public sealed class ProcessAdapter : ICellPhysics, IDisposable
         }
         else
         {
-            w.WritePropertyName("scene");
-            w.WriteRawValue(CompactScenes.GetValue(scene, SceneJson.WriteCompact), skipInputValidation: true);
+            WriteScene(w, scene);
         }
 
         Wire.WriteCell(w, "cell", cell);
@@ -242,6 +241,13 @@ public sealed class ProcessAdapter : ICellPhysics, IDisposable
     }
 
     private static FindCellResult ReadFindCell(JsonElement a) => Wire.ReadFindCell(a);
+
+    // The scene as its compact JSON, serialised once per scene instance.
+    private static void WriteScene(Utf8JsonWriter w, Scene scene)
+    {
+        w.WritePropertyName("scene");
+        w.WriteRawValue(CompactScenes.GetValue(scene, SceneJson.WriteCompact), skipInputValidation: true);
+    }
 
     // load_scene once per scene: the most recent few stay loaded (a walk, its translated copy, a shrink step's
     // neighbours), the oldest is unloaded to make room.
@@ -268,11 +274,7 @@ public sealed class ProcessAdapter : ICellPhysics, IDisposable
             string id = Call(
                 Op.LoadScene,
                 "load_scene",
-                w =>
-                {
-                    w.WritePropertyName("scene");
-                    w.WriteRawValue(CompactScenes.GetValue(scene, SceneJson.WriteCompact), skipInputValidation: true);
-                },
+                w => WriteScene(w, scene),
                 a => Wire.ReadString(a, "scene_id"));
             loaded.Add((scene, id));
             return id;
