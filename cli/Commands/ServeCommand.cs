@@ -33,12 +33,13 @@ internal static class ServeCommand
             HelpName = "NAMES",
         };
         var noLoad = new Option<bool>("--no-load-scene") { Description = "Do not announce load_scene: every find_cell carries its whole scene (as a server without it)." };
-        var command = new Command("serve", "Serve the reference core over protocol v1 on stdin/stdout (docs/protocol.md); ends at end of input.") { fault, pick, fidelity, noLoad };
-        command.SetAction(parse => Guard.Run("serve", () => Run(parse.GetValue(fault), parse.GetValue(pick), parse.GetValue(fidelity), parse.GetValue(noLoad))));
+        var noDat = new Option<bool>("--no-dat-records") { Description = "Announce load_scene without dat_records: scenes arrive as the project's JSON, not as retail dat records." };
+        var command = new Command("serve", "Serve the reference core over protocol v1 on stdin/stdout (docs/protocol.md); ends at end of input.") { fault, pick, fidelity, noLoad, noDat };
+        command.SetAction(parse => Guard.Run("serve", () => Run(parse.GetValue(fault), parse.GetValue(pick), parse.GetValue(fidelity), parse.GetValue(noLoad), parse.GetValue(noDat))));
         return command;
     }
 
-    private static int Run(string? faultId, string? pickName, string? fidelityNames, bool noLoadScene)
+    private static int Run(string? faultId, string? pickName, string? fidelityNames, bool noLoadScene, bool noDatRecords)
     {
         if (!PickNames.TryParse(pickName, out var pick))
         {
@@ -65,7 +66,7 @@ internal static class ServeCommand
         var utf8 = new UTF8Encoding(false);
         using var input = new StreamReader(Console.OpenStandardInput(), utf8);
         using var output = new StreamWriter(Console.OpenStandardOutput(), utf8) { NewLine = "\n" };
-        new ProtocolServer(impl) { LoadScenes = !noLoadScene }.Serve(input, output);
+        new ProtocolServer(impl) { LoadScenes = !noLoadScene, DatRecords = !noDatRecords }.Serve(input, output);
         return ExitCodes.Ok;
     }
 }

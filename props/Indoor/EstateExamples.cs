@@ -24,6 +24,10 @@ public sealed class EstateExamples
             Recipe(SceneRoute.LeadIn, Plan(EstateLayout.Row, 2, 2) with { WorldX = (192.0 * 0xA9) + 14, Yaw = 0, Lead = 2 })),
         ("estate-vestibule", "a six-room ring with a thin vestibule at the entry door (two portals in one step), an unloaded room in the loop, three spheres",
             Recipe(SceneRoute.Through, Plan(EstateLayout.Ring, 6, 2) with { Vestibule = true, UnloadedRoom = 3 }) with { StepMax = 0.5f }),
+        ("estate-terrace", "a terrace of three rooms, every shared wall sealed, each room its own door: outdoors along the doors' facade, within half a radius of the wall, over the two sealed seams",
+            Recipe(SceneRoute.Facade, Plan(EstateLayout.Row, 3, 3) with { SealedWalls = 0x7F, EntryDoor = 0, ExitDoor = 1 })),
+        ("estate-notch-facade", "a row of three L-shaped rooms with their doors south and their notches north: outdoors along the north facade, where a sphere reaches the rooms' second pieces but not their first",
+            Recipe(SceneRoute.Facade, Plan(EstateLayout.Row, 3, 3) with { LShapes = 0b111, EntryDoor = 0 }, target: 1)),
     ];
 
     [Fact(DisplayName = "Each example estate round-trips through the corpus format and walks the same")]

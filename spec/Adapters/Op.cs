@@ -46,6 +46,12 @@ public enum Op
     /// </summary>
     LoadScene = 1 << 11,
 
+    /// <summary>
+    /// <c>dat_records</c>: with <see cref="LoadScene"/>, the scene is sent as retail dat records (base64) and a manifest
+    /// instead of the project's JSON (docs/protocol.md, "Scenes as dat records"); a transport capability too.
+    /// </summary>
+    DatRecords = 1 << 12,
+
     /// <summary>Every LandDefs operation.</summary>
     LandDefs = BlockIdToLcoord | GidToLcoord | LcoordToGid | InboundValidCellId | GetOutsideLcoord | AdjustToOutside,
 
@@ -73,6 +79,7 @@ public static class OpNames
         (Op.FindCellScene, "find_cell_scene"),
         (Op.FindCellTransition, "find_cell_transition"),
         (Op.LoadScene, "load_scene"),
+        (Op.DatRecords, "dat_records"),
     ];
 
     /// <summary>Returns the protocol names of every flag set in <paramref name="ops"/>.</summary>

@@ -13,7 +13,7 @@ public static class EstateClasses
         "frame:per-cell", "frame:general-rotation", "doors:1", "doors:2", "doors:3", "doors:4", "door:invalid-marker", "graph:branch",
         "graph:loop", "storey:stacked", "cell:overlap-stairwell", "cell:multi-piece", "buildings:2+", "place:block-corner",
         "place:building-across-line", "mover:neighbour-block", "dungeon:cross-block", "cell:unloaded-middle", "body:3-spheres",
-        "body:mixed-radii", "step:two-portals", "see:partial",
+        "body:mixed-radii", "step:two-portals", "see:partial", "wall:sealed", "walk:facade", "walk:facade-sealed-seam", "walk:second-piece-only", "walk:door-room-second-piece",
     ];
 
     /// <summary>Returns the classes of an estate walk.</summary>
@@ -113,6 +113,85 @@ public static class EstateClasses
         {
             yield return "see:partial";
         }
+
+        var at = EstateGrid.Positions(p.Layout, Math.Clamp(p.Rooms, 1, 6));
+        var links = EstateGrid.Links(at);
+        var open = EstateGrid.OpenLinks(at, p.SealedWalls);
+        if (open.Count < links.Count)
+        {
+            yield return "wall:sealed";
+        }
+
+        if (r.Route == SceneRoute.Facade)
+        {
+            yield return "walk:facade";
+            var passed = FacadeRooms(r, w, at);
+            var doors = main.Portals.Where(b => b.Portal != 0xFFFF).Select(b => b.Cell - 0x100).ToHashSet();
+            if (links.Except(open).Any(l => passed.Contains(l.A) && passed.Contains(l.B) && doors.Contains(l.A) && doors.Contains(l.B)))
+            {
+                yield return "walk:facade-sealed-seam";
+            }
+
+        }
+
+        if (SecondPieceOnly(p, w, home))
+        {
+            yield return "walk:second-piece-only";
+        }
+
+        var doorRooms = main.Portals.Where(b => b.Portal != 0xFFFF).Select(b => b.Cell).ToHashSet();
+        if (SecondPieceOnly(p, w, [.. home.Where(c => doorRooms.Contains(c.Id.Low))]))
+        {
+            yield return "walk:door-room-second-piece";
+        }
+    }
+
+    // Sphere 0's centres along the walk in the building block's frame.
+    private static IEnumerable<Vector3> Centres(EstatePlan p, SceneWalk w)
+    {
+        var start = w.Walk.StartCell.Landblock;
+        var pos = w.Walk.Start + new Vector3(192f * (start.X - p.Block.X), 192f * (start.Y - p.Block.Y), 0) + w.Walk.Body[0].Offset;
+        yield return pos;
+        foreach (var step in w.Walk.Steps)
+        {
+            pos += new Vector3(step, 0);
+            yield return pos;
+        }
+    }
+
+    // Whether sphere 0 ever reaches an L room's second piece without reaching its first (the two differ there: facts §5.7).
+    private static bool SecondPieceOnly(EstatePlan p, SceneWalk w, List<SceneCell> home)
+    {
+        var ls = home.Where(c => c.Pieces.Count > 1).Select(c => (Frame: new Frame(c.Origin, c.Rotation), First: c.Pieces[0].ToConvex().Bounds, Second: c.Pieces[1].ToConvex().Bounds)).ToList();
+        float r = w.Walk.Body[0].Radius;
+        return ls.Count > 0 && Centres(p, w).Any(g => ls.Any(l =>
+        {
+            var q = l.Frame.GlobalToLocal(g);
+            return Distance(l.Second, q) < r && Distance(l.First, q) > r + 0.02f;
+        }));
+    }
+
+    private static float Distance(Box b, Vector3 q) => Vector3.Distance(Vector3.Clamp(q, b.Min, b.Max), q);
+
+    // The grid rooms a facade walk's sphere 0 comes within its radius of (distance to the room's footprint, building frame).
+    private static HashSet<int> FacadeRooms(SceneRecipe r, SceneWalk w, (int X, int Y)[] at)
+    {
+        var p = r.Estate!;
+        var passed = new HashSet<int>();
+        foreach (var g in Centres(p, w))
+        {
+            var q = p.Frame.GlobalToLocal(g);
+            for (int i = 0; i < at.Length; i++)
+            {
+                var min = new Vector2(at[i].X * p.Width, at[i].Y * p.Depth);
+                if (Vector2.Distance(Vector2.Clamp(new Vector2(q.X, q.Y), min, min + new Vector2(p.Width, p.Depth)), new Vector2(q.X, q.Y)) < r.Radius)
+                {
+                    passed.Add(i);
+                }
+            }
+        }
+
+        return passed;
     }
 
     // Whether the building's cells reach into more than one block (their pieces' corners, world metres).

@@ -57,10 +57,16 @@ public static class EstateRoute
 
         int e = EstateKit.Entry(plan, m.Doors.Count), x = EstateKit.Exit(plan, m.Doors.Count);
         var entry = m.Doors[e];
+        if (r.Route == SceneRoute.Facade)
+        {
+            // Even targets: the entry door's facade; odd: another free wall of the entry room (where its notch is, if any).
+            var side = r.Target % 2 == 0 ? entry.Side : EstateGrid.FreeSides(m.Positions, entry.Room).FirstOrDefault(f => f != entry.Side, entry.Side);
+            return (home, [.. Facade(m, entry.Room, side, m.Doors[x], r.Radius).Select(m.ToBlock)]);
+        }
         var inside = new List<Vector3> { entry.Outside, entry.Point, m.Centres[entry.Room] };
         bool back = r.Route == SceneRoute.EnterAndBack, stay = r.Route == SceneRoute.Enter;
         int target = back || stay ? Math.Abs(r.Target) % m.Centres.Count : m.Doors[x].Room;
-        var rooms = EstateGrid.Path(m.Positions, entry.Room, target, plan.UnloadedRoom) ?? [entry.Room];
+        var rooms = EstateGrid.Path(m.Positions, plan.SealedWalls, entry.Room, target, plan.UnloadedRoom) ?? [entry.Room];
         for (int i = 1; i < rooms.Count; i++)
         {
             inside.Add(m.Wall(rooms[i - 1], rooms[i]));
@@ -88,5 +94,44 @@ public static class EstateRoute
         }
 
         return (home, points);
+    }
+
+    /// <summary>
+    /// The facade walk, building frame: 2.5 m out from the midpoint of one free wall of a room, in to half a radius from
+    /// it, then along the run of rooms whose wall on that side is free (toward the exit door when it is on that side of
+    /// the run, else toward the longer end), to 0.4 of the end room's extent past its wall's midpoint, and 2.5 m out
+    /// again. The centre stays outdoors, so every env candidate comes from building entry; a sealed wall between two
+    /// doors' rooms, or a door room's notch on that side, lies under the sphere.
+    /// </summary>
+    private static List<Vector3> Facade(EstateModel m, int room, GridSide side, EstateDoor exit, float radius)
+    {
+        var at = m.Positions;
+        var (back, ahead) = side is GridSide.South or GridSide.North ? (GridSide.West, GridSide.East) : (GridSide.South, GridSide.North);
+        List<int> Run(GridSide dir)
+        {
+            var run = new List<int>();
+            int j = Array.IndexOf(at, EstateGrid.Step(at[room], dir));
+            while (j >= 0 && EstateGrid.FreeSides(at, j).Contains(side))
+            {
+                run.Add(j);
+                j = Array.IndexOf(at, EstateGrid.Step(at[j], dir));
+            }
+
+            return run;
+        }
+
+        List<int> forward = Run(ahead), backward = Run(back);
+        bool toExit = exit.Side == side;
+        var (dir, rooms) = toExit && backward.Contains(exit.Room) ? (back, backward)
+            : toExit && forward.Contains(exit.Room) ? (ahead, forward)
+            : backward.Count > forward.Count ? (back, backward) : (ahead, forward);
+        int end = rooms.Count == 0 ? room : toExit && rooms.Contains(exit.Room) ? exit.Room : rooms[^1];
+        var outward = EstateKit.Outward(side);
+        var half = outward * new Vector3(m.Plan.Width / 2, m.Plan.Depth / 2, 0);
+        float extent = side is GridSide.South or GridSide.North ? m.Plan.Width : m.Plan.Depth;
+        var gap = outward * (radius / 2);
+        var start = m.Centres[room] + half;
+        var last = m.Centres[end] + half + gap + (EstateKit.Outward(dir) * (0.4f * extent));
+        return [start + (outward * 2.5f), start + gap, last, last + (outward * 2.5f)];
     }
 }

@@ -37,6 +37,12 @@ public enum SceneRoute
 
     /// <summary>An estate: along the lead-in dungeon from the next block, out of its exit, in by the entry door and out by another.</summary>
     LeadIn,
+
+    /// <summary>
+    /// An estate: up to the entry door, then outdoors along its facade within half a radius of the wall, past the rooms
+    /// behind it (their doors, sealed walls and notches: building entry from outside), and away.
+    /// </summary>
+    Facade,
 }
 
 /// <summary>

@@ -7,8 +7,9 @@ using FsCheck.Fluent;
 namespace AcPhys.Spec.Generators;
 
 /// <summary>
-/// Estate generators: room graphs that branch or loop, 1–4 doors (some invalid), per-cell frames with tilt, storeys and
-/// stairwells, L-shaped rooms, vestibules, unloaded rooms, neighbouring buildings, lead-in dungeons; placed anywhere,
+/// Estate generators: room graphs that branch or loop (some shared walls sealed), 1–4 doors (some invalid), per-cell frames with tilt, storeys and
+/// stairwells, L-shaped rooms, vestibules, unloaded rooms, neighbouring buildings, lead-in dungeons; walks through the
+/// rooms or outdoors along a facade; placed anywhere,
 /// across a block line or at a four-block corner; bodies of 1–3 spheres of different radii.
 /// </summary>
 public static class EstateGens
@@ -27,6 +28,7 @@ public static class EstateGens
         from flips in Gen.Choose(0, 0xFFFF)
         from extras in Gen.Frequency((5, Gen.Constant(0)), (2, Gen.Choose(1, 3)))
         from features in Gen.Choose(0, 0xFFFF)
+        from sealedWalls in Gen.Frequency((2, Gen.Constant(0)), (1, Gen.Choose(1, 0x7F)))
         from doorsPick in Gen.Choose(0, 15).Two()
         from see in Gen.Elements(0, 1, 2, 2)
         from place in Places
@@ -37,6 +39,7 @@ public static class EstateGens
             LShapes = (features >> 3) % 3 == 0 ? (features >> 5) & 0x3F : 0,
             Vestibule = (features >> 11) % 4 == 0,
             UnloadedRoom = layout == EstateLayout.Ring && rooms >= 4 && (features >> 13) % 4 == 0 ? 3 : -1,
+            SealedWalls = sealedWalls,
             SeeDepth = see,
             ExtraBuildings = extras,
             EntryDoor = doorsPick.Item1,
@@ -48,7 +51,7 @@ public static class EstateGens
         from plan in Plans
         from route in Gen.Frequency(
             (4, Gen.Constant(SceneRoute.Through)), (3, Gen.Constant(SceneRoute.EnterAndBack)), (1, Gen.Constant(SceneRoute.Storey)),
-            (1, Gen.Constant(SceneRoute.Stairwell)), (2, Gen.Constant(SceneRoute.LeadIn)))
+            (1, Gen.Constant(SceneRoute.Stairwell)), (2, Gen.Constant(SceneRoute.LeadIn)), (3, Gen.Constant(SceneRoute.Facade)))
         from target in Gen.Choose(0, 5)
         from r0 in Gen.Choose(12, 32).Select(i => i / 32f)
         from spheres in Gen.Choose(1, 3)
@@ -64,11 +67,20 @@ public static class EstateGens
         };
 
     // The plan made fit for its route: a storey walk needs a storey, a stairwell walk a stairwell, a lead-in an
-    // upright, unyawed building whose block has a block to the west (door 0 then opens west toward the lead-in).
+    // upright, unyawed building whose block has a block to the west (door 0 then opens west toward the lead-in); a
+    // facade walk no vestibule (it would stand in the walk's way, a cell entered through its wall), and half the time a
+    // terrace (every shared wall sealed: two doors' rooms meet at a wall with no portal) and half the time L rooms
+    // (a door room's notch on the walked side).
     private static EstatePlan Fit(EstatePlan p, SceneRoute route) => route switch
     {
         SceneRoute.Storey => p with { Storey = true },
         SceneRoute.Stairwell => p with { Storey = true, Stairwell = true },
+        SceneRoute.Facade => p with
+        {
+            Vestibule = false,
+            SealedWalls = ((p.Flips >> 3) & 1) != 0 ? 0x7F : p.SealedWalls,
+            LShapes = ((p.Flips >> 4) & 1) != 0 ? 0x3F : p.LShapes,
+        },
         SceneRoute.LeadIn => p with { Lead = 1 + (p.Flips % 3), Yaw = 0, Tilt = Vector2.Zero, EntryDoor = 0, WorldX = (192.0 * Math.Floor(p.WorldX / 192)) + 8 + (p.Flips % 23) },
         _ => p,
     };

@@ -6,7 +6,7 @@ namespace AcPhys.Spec.Generators;
 
 /// <summary>
 /// Shrink candidates for estate recipes, most aggressive first: fewer buildings, no lead-in, fewer rooms and doors,
-/// no storey, stairwell, vestibule, notches or unloaded room; shared frames (one frame per building, no tilt, yaw 0);
+/// no storey, stairwell, vestibule, notches, sealed walls or unloaded room; shared frames (one frame per building, no tilt, yaw 0);
 /// a row; plain portal encodings; fewer and equal spheres.
 /// </summary>
 public static class EstateShrinker
@@ -79,6 +79,11 @@ public static class EstateShrinker
         if (e.LShapes != 0)
         {
             yield return With(e with { LShapes = 0 });
+        }
+
+        if (e.SealedWalls != 0)
+        {
+            yield return With(e with { SealedWalls = 0 });
         }
 
         if (e.UnloadedRoom >= 0)

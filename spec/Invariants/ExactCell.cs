@@ -5,7 +5,9 @@ namespace AcPhys.Spec.Invariants;
 
 /// <summary>
 /// One env cell of a scene in double precision, read from the scene description alone (not from the core's BSP):
-/// the frame, each piece's inner planes normalised, and each portal's plane normalised, all in the cell's local frame.
+/// the frame, the first piece's inner planes normalised, and each portal's plane normalised, all in the cell's local
+/// frame. Only the first piece: retail's three cell queries follow the BSP's positive chain, which holds piece 0, and
+/// never the negative children where further pieces hang (facts §5.7) — a port that walks them (the union) deviates.
 /// </summary>
 /// <remarks>
 /// Depths are plane-wise (the minimum over a piece's planes of the signed distance), which is what the BSP queries
@@ -14,7 +16,7 @@ namespace AcPhys.Spec.Invariants;
 /// </remarks>
 public sealed class ExactCell
 {
-    private readonly double[][] pieces; // per piece: (nx, ny, nz, d) × planes
+    private readonly double[] first; // (nx, ny, nz, d) × planes of piece 0
     private readonly double[] portals; // per portal: (nx, ny, nz, d)
     private readonly double ox, oy, oz, qx, qy, qz, qw;
 
@@ -27,7 +29,7 @@ public sealed class ExactCell
         var q = source.Rotation;
         double n = Math.Sqrt(((double)q.X * q.X) + ((double)q.Y * q.Y) + ((double)q.Z * q.Z) + ((double)q.W * q.W));
         (qx, qy, qz, qw) = (q.X / n, q.Y / n, q.Z / n, q.W / n);
-        pieces = [.. source.Pieces.Select(PlanesOf)];
+        first = PlanesOf(source.Pieces[0]);
         portals = [.. source.Portals.SelectMany(p => Normalised(p.Plane.Normal, p.Plane.D))];
     }
 
@@ -40,22 +42,7 @@ public sealed class ExactCell
     /// <summary>Returns the plane-wise depth of a point in the first piece, the one on the BSP's positive chain (facts §5.7; docs/indoor.md "Unions").</summary>
     /// <param name="p">A point in the cell's block frame.</param>
     /// <returns>Metres: &gt; 0 inside every plane.</returns>
-    public double DepthFirst(Vector3 p) => Depth(pieces[0], Local(p));
-
-    /// <summary>Returns the largest plane-wise depth over all pieces (the union a full traversal would answer for).</summary>
-    /// <param name="p">A point in the cell's block frame.</param>
-    /// <returns>Metres.</returns>
-    public double DepthAny(Vector3 p)
-    {
-        var l = Local(p);
-        double best = double.NegativeInfinity;
-        foreach (var piece in pieces)
-        {
-            best = Math.Max(best, Depth(piece, l));
-        }
-
-        return best;
-    }
+    public double DepthFirst(Vector3 p) => Depth(first, Local(p));
 
     /// <summary>Returns the signed distance of a point from portal <paramref name="index"/>'s plane (normalised), in the cell's frame.</summary>
     /// <param name="index">Portal index.</param>

@@ -64,13 +64,13 @@ public static class ExactSteps
     public static bool SurelyIntersects(ICellPhysics impl, WalkStep s, ExactCell cell) =>
         s.Query.Spheres.Any(sp => cell.DepthFirst(TransitPoint(impl, s.Query.Cell, cell.Source.Id, sp.Center)) > -(sp.Radius + BspPadding) + IndoorInvariants.Margin);
 
-    /// <summary>Tests whether some sphere comes within the margin of intersecting any piece of the cell under the BSP test.</summary>
+    /// <summary>Tests whether some sphere comes within the margin of intersecting the cell's first piece under the BSP test (facts §5.7: not a later piece).</summary>
     /// <param name="impl">The implementation.</param>
     /// <param name="s">The step.</param>
     /// <param name="cell">The cell.</param>
     /// <returns>False when every sphere is clear of the cell by more than the margin.</returns>
     public static bool MayIntersect(ICellPhysics impl, WalkStep s, ExactCell cell) =>
-        s.Query.Spheres.Any(sp => cell.DepthAny(TransitPoint(impl, s.Query.Cell, cell.Source.Id, sp.Center)) >= -(sp.Radius + BspPadding) - IndoorInvariants.Margin);
+        s.Query.Spheres.Any(sp => cell.DepthFirst(TransitPoint(impl, s.Query.Cell, cell.Source.Id, sp.Center)) >= -(sp.Radius + BspPadding) - IndoorInvariants.Margin);
 
     /// <summary>Tests whether the indoor visibility filter ran on this query (facts §4 step 5: static query from an indoor position).</summary>
     /// <param name="s">The step.</param>

@@ -32,7 +32,7 @@ public static class IndoorClosureInvariants
     /// <summary>ENV-CANDIDATE-JUSTIFIED.</summary>
     public static readonly Invariant<SceneWalk> EnvCandidateJustified = new(
         "ENV-CANDIDATE-JUSTIFIED",
-        "Every loaded env candidate is the position itself, or a sphere comes within 1 mm of intersecting it under the BSP test (no block offset) and it is behind a portal of another walked env candidate or behind a building portal with a portal index other than 0xFFFF of a walked land candidate's building (after the static filter, of any loaded env cell or any reachable land cell).",
+        "Every loaded env candidate is the position itself, or a sphere comes within 1 mm of intersecting its first piece under the BSP test (no block offset; later pieces hang under negative children, which retail never walks) and it is behind a portal of another walked env candidate or behind a building portal with a portal index other than 0xFFFF of a walked land candidate's building (after the static filter, of any loaded env cell or any reachable land cell).",
         "facts §4 step 4a, §5.1, §5.3, §5.7",
         Op.FindCellScene,
         SceneDomain.Instance,

@@ -31,7 +31,7 @@ public static class IndoorExactInvariants
     /// <summary>PICK-FIRST-ENV.</summary>
     public static readonly Invariant<SceneWalk> PickFirstEnv = new(
         "PICK-FIRST-ENV",
-        "With the retail pick and no visibility filter, when a loaded env candidate with portals contains sphere 0's centre (re-expressed in its block frame with GetBlockOffset) by more than 1 mm, the containing cell is the first such candidate in the answer's order, unless an earlier env candidate is within 1 mm of containing it; the other spheres never matter.",
+        "With the retail pick and no visibility filter, when a loaded env candidate with portals contains sphere 0's centre (re-expressed in its block frame with GetBlockOffset) by more than 1 mm in its first piece (the BSP's positive chain), the containing cell is the first such candidate in the answer's order, unless an earlier env candidate is within 1 mm of containing it; the other spheres never matter.",
         "facts §4 step 4b, §5.5, §5.7, §5.9, §6.8, §7 #13",
         Op.FindCellScene,
         SceneDomain.Instance,
@@ -171,9 +171,9 @@ public static class IndoorExactInvariants
                     : Outcome.Violated($"candidate {id} is the first env candidate containing sphere 0's centre but the containing cell is {s.Containing} (candidates [{string.Join(", ", s.Cells)}])");
             }
 
-            if (cell.DepthAny(p) >= -LandDefs.Epsilon - IndoorInvariants.Margin)
+            if (cell.DepthFirst(p) >= -LandDefs.Epsilon - IndoorInvariants.Margin)
             {
-                return Outcome.Vacuous; // an earlier env candidate within the tie band (or holding it in a later piece)
+                return Outcome.Vacuous; // an earlier env candidate within the tie band
             }
         }
 

@@ -274,7 +274,17 @@ public sealed class ProcessAdapter : ICellPhysics, IDisposable
             string id = Call(
                 Op.LoadScene,
                 "load_scene",
-                w => WriteScene(w, scene),
+                w =>
+                {
+                    if ((Ops & Op.DatRecords) != 0)
+                    {
+                        DatWire.WriteScene(w, "dat", scene);
+                    }
+                    else
+                    {
+                        WriteScene(w, scene);
+                    }
+                },
                 a => Wire.ReadString(a, "scene_id"));
             loaded.Add((scene, id));
             return id;

@@ -26,6 +26,9 @@ public sealed class ProtocolServer(ICellPhysics impl)
     /// <summary>Gets or initializes a value indicating whether the server announces <c>load_scene</c> (true by default; false serves as an older server would).</summary>
     public bool LoadScenes { get; init; } = true;
 
+    /// <summary>Gets or initializes a value indicating whether the server announces <c>dat_records</c> with <c>load_scene</c> (true by default: scenes then arrive as dat records).</summary>
+    public bool DatRecords { get; init; } = true;
+
     /// <summary>Reads requests until end of input, answering each on its own line.</summary>
     /// <param name="input">Requests.</param>
     /// <param name="output">Answers (flushed after each).</param>
@@ -218,7 +221,7 @@ public sealed class ProtocolServer(ICellPhysics impl)
             return Error($"scenes not served by {impl.Name} (it does not offer find_cell_scene)");
         }
 
-        var scene = ReadScene(Wire.Field(request, "scene"));
+        var scene = request.TryGetProperty("dat", out var dat) ? DatWire.ReadScene(dat) : ReadScene(Wire.Field(request, "scene"));
         lock (loadedScenes)
         {
             if (loadedScenes.Count >= MaxLoadedScenes)
@@ -264,10 +267,11 @@ public sealed class ProtocolServer(ICellPhysics impl)
             w.WriteNumber("protocol", Wire.Version);
             w.WriteString("name", impl.Name);
             w.WriteStartArray("ops");
-            var ops = impl.Ops & ~Op.LoadScene;
+            var ops = impl.Ops & ~(Op.LoadScene | Op.DatRecords);
             if (LoadScenes && (ops & Op.FindCellScene) != 0)
             {
                 ops |= Op.LoadScene; // the server holds the scenes; the implementation behind it needs nothing for it
+                ops |= DatRecords ? Op.DatRecords : Op.None; // and reads them from records with the project's reader
             }
 
             foreach (var name in OpNames.Names(ops))

@@ -16,7 +16,7 @@ public enum GridSide
     East,
 }
 
-/// <summary>The room grid of an estate: where each room sits, which rooms share a wall (every shared wall is a portal), which walls are free.</summary>
+/// <summary>The room grid of an estate: where each room sits, which rooms share a wall (a portal unless sealed), which walls are free.</summary>
 public static class EstateGrid
 {
     private static readonly (int X, int Y)[] RowAt = [(0, 0), (1, 0), (2, 0), (3, 0), (4, 0), (5, 0)];
@@ -50,6 +50,13 @@ public static class EstateGrid
         return links;
     }
 
+    /// <summary>Returns the shared walls that are portal pairs: <see cref="Links"/> without the sealed ones.</summary>
+    /// <param name="at">Positions.</param>
+    /// <param name="sealedWalls">Bit k: link k is sealed.</param>
+    /// <returns>The open pairs, in <see cref="Links"/> order.</returns>
+    public static List<(int A, int B, GridSide Side)> OpenLinks((int X, int Y)[] at, int sealedWalls) =>
+        [.. Links(at).Where((_, k) => k >= 31 || ((sealedWalls >> k) & 1) == 0)];
+
     /// <summary>Returns the free walls of a room (no room behind them), in preference order south, north, west, east.</summary>
     /// <param name="at">Positions.</param>
     /// <param name="room">The room.</param>
@@ -74,15 +81,16 @@ public static class EstateGrid
         _ => (p.X + 1, p.Y),
     };
 
-    /// <summary>Returns the shortest room path from one room to another over shared walls (breadth-first, links in order).</summary>
+    /// <summary>Returns the shortest room path from one room to another over open shared walls (breadth-first, links in order).</summary>
     /// <param name="at">Positions.</param>
+    /// <param name="sealedWalls">Bit k: link k is sealed (not passable).</param>
     /// <param name="from">Start room.</param>
     /// <param name="to">End room.</param>
     /// <param name="avoid">A room not to pass through (−1 for none).</param>
     /// <returns>The rooms, from first to last, or null when unreachable.</returns>
-    public static List<int>? Path((int X, int Y)[] at, int from, int to, int avoid)
+    public static List<int>? Path((int X, int Y)[] at, int sealedWalls, int from, int to, int avoid)
     {
-        var links = Links(at);
+        var links = OpenLinks(at, sealedWalls);
         var back = new Dictionary<int, int> { [from] = from };
         var queue = new Queue<int>([from]);
         while (queue.Count > 0)

@@ -5,7 +5,7 @@ namespace AcPhys.Spec.Scenes;
 
 /// <summary>
 /// Builds estate scenes (see <see cref="EstatePlan"/>). Geometry is drafted in each building's frame — rooms are grid
-/// boxes, every shared wall a portal pair, doors exit portals — then mapped into each cell's own frame
+/// boxes, every shared wall a portal pair unless sealed, doors exit portals — then mapped into each cell's own frame
 /// (<see cref="CellPlacement"/>), so neighbouring cells have different local coordinates but the same world walls.
 /// </summary>
 public static class EstateKit
@@ -22,7 +22,7 @@ public static class EstateKit
             main.Room(at[i], plan.OwnFrames, (plan.CellTurns >> (2 * i)) & 3);
         }
 
-        foreach (var (a, b, side) in EstateGrid.Links(at))
+        foreach (var (a, b, side) in EstateGrid.OpenLinks(at, plan.SealedWalls))
         {
             main.Link(a, b, main.WallPoint(at[a], side), -Outward(side));
         }

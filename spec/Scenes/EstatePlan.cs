@@ -19,7 +19,7 @@ public enum EstateLayout
 /// <summary>
 /// An estate: a building of 1–6 grid rooms (a room graph that may branch or loop), 1–4 doors (building portals, some
 /// carrying the invalid marker), each cell in its own frame (origin and quarter turns per cell, the building yawed and
-/// tilted), optionally a storey above room 0 with a stairwell overlapping both, L-shaped rooms (two pieces), a thin
+/// tilted), shared walls that are portal pairs or sealed, optionally a storey above room 0 with a stairwell overlapping both, L-shaped rooms (two pieces), a thin
 /// vestibule at the entry door, an unloaded room, up to three further buildings nearby, and a dungeon lead-in in the
 /// next block west whose cells reach into the estate's block. Placed by the world position of its origin.
 /// </summary>
@@ -58,6 +58,12 @@ public sealed record EstatePlan(double WorldX, double WorldY, EstateLayout Layou
 
     /// <summary>Gets a value indicating whether the entry door opens into a thin vestibule cell (two portals within 0.25 m).</summary>
     public bool Vestibule { get; init; }
+
+    /// <summary>
+    /// Gets bit k: the k-th shared wall (<see cref="EstateGrid.Links"/> order) is sealed — no portal pair, so the rooms
+    /// on either side meet only through their own doors (a duplex).
+    /// </summary>
+    public int SealedWalls { get; init; }
 
     /// <summary>Gets the room that is declared but not loaded (a load hint in the middle of the graph), or −1.</summary>
     public int UnloadedRoom { get; init; } = -1;
