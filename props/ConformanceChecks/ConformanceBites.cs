@@ -36,8 +36,9 @@ public sealed class ConformanceBites
         Assert.Contains("load hint", result.Violation!.Message, StringComparison.Ordinal);
     }
 
-    [Fact(DisplayName = "FIND-CELL-CONFORMANCE: every indoor planted fault the scenes reach deviates from the reference and is caught")]
-    public void IndoorFaultsAreCaught() => Assert.All(IndoorFaults.All.Where(f => f.CaughtBy.Count > 0), f =>
+    // pick-last-sphere deviates too, but the pr stream meets no case where it shows in conformance's budget (docs/indoor.md).
+    [Fact(DisplayName = "FIND-CELL-CONFORMANCE: every indoor planted fault that names it deviates from the reference and is caught")]
+    public void IndoorFaultsAreCaught() => Assert.All(IndoorFaults.All.Where(f => f.CaughtBy.Contains("FIND-CELL-CONFORMANCE")), f =>
         Assert.Equal(ResultStatus.Failed, ConformanceInvariants.FindCell.Run(PlantedFaults.Create(f.Id), Profile.Pr.CasesPerInvariant, PropertyRun.SeedFor("FIND-CELL-CONFORMANCE")).Status));
 
     [Fact(DisplayName = "FIND-CELL-CONFORMANCE: exact ties retail decides by rule are pinned on open land (a current-first pick declared as retail fails)")]

@@ -2,8 +2,7 @@ namespace AcPhys.Spec.Faults;
 
 /// <summary>
 /// Planted faults of a port's indoor transit (issue #15): each is one defect a port's maintainers plausibly write in
-/// find_cell_list, portal transit, building entry or the cell volumes, run by <see cref="FaultySceneQuery"/>. A fault
-/// whose CaughtBy is empty is not reachable by today's scenes (its catalogue entry is pending on the branch that adds them).
+/// find_cell_list, portal transit, building entry or the cell volumes, run by <see cref="FaultySceneQuery"/>.
 /// </summary>
 public static class IndoorPortFaults
 {
@@ -25,8 +24,8 @@ public static class IndoorPortFaults
     public static readonly PlantedFault BuildingStopFirstRoom = new(
         "building-stop-first-room",
         "building entry breaks out of the building-portal loop at the first room it enters",
-        "facts §5.3: retail stops at the first hit of the sphere loop inside check_building_transit, not of the portal loop; a port moved the break one loop out. Equivalent while the rooms behind two doors are portal-linked (the closure adds the second, in the same order): every generated estate links every shared wall, so it is not caught yet; it needs two rooms with their own doors and a sealed wall between them (a duplex) and a walk along the facade.",
-        []);
+        "facts §5.3: retail stops at the first hit of the sphere loop inside check_building_transit, not of the portal loop; a port moved the break one loop out. Equivalent while the rooms behind two doors are portal-linked (the closure adds the second, in the same order); seen where two doors' rooms meet at a sealed wall (a duplex or terrace) and a facade walk's sphere reaches both.",
+        ["BUILDING-ENTRY-COMPLETE", "FIND-CELL-CONFORMANCE"]);
 
     /// <summary>Transit closure over a snapshot.</summary>
     public static readonly PlantedFault SnapshotClosure = new(
@@ -60,8 +59,8 @@ public static class IndoorPortFaults
     public static readonly PlantedFault WalksNegativeChildren = new(
         "walks-negative-children",
         "the cell queries walk the whole BSP (every piece of a multi-piece cell), not only the positive chain",
-        "facts §5.7, §6.16: all three cell queries follow the positive-child chain and ignore negative children, so a multi-piece cell answers for its first piece; a port wrote the textbook BSP traversal. (Replaces the brief's first-piece-only, which is exactly retail.) Not caught yet: generated walks keep every sphere within reach of piece 0 of an L room, so the union never shows; it needs walks passing an L room's second piece from outside or from a neighbour.",
-        []);
+        "facts §5.7, §6.16: all three cell queries follow the positive-child chain and ignore negative children, so a multi-piece cell answers for its first piece; a port wrote the textbook BSP traversal. (Replaces the brief's first-piece-only, which is exactly retail.) Seen where a sphere reaches an L room's second piece but not its first: a facade walk past a door room's notch (building entry lets the room in).",
+        ["ENV-CANDIDATE-JUSTIFIED", "FIND-CELL-CONFORMANCE"]);
 
     /// <summary>Interior pick keeps the last env hit.</summary>
     public static readonly PlantedFault PickLastEnv = new(
@@ -75,7 +74,7 @@ public static class IndoorPortFaults
         "pick-last-sphere",
         "the containing pick tests the last sphere's centre instead of sphere 0's",
         "facts §4 step 4b, §6.8: only sphere 0 decides the containing cell; a port's loop variable leaked out of the sphere loop.",
-        ["PORTAL-TRANSIT", "CONTAINING-CONTAINS", "PICK-FIRST-ENV", "FIND-CELL-CONFORMANCE"]);
+        ["PORTAL-TRANSIT"]);
 
     /// <summary>Filter drops load hints.</summary>
     public static readonly PlantedFault FilterDropsHints = new(

@@ -1,6 +1,7 @@
 using AcPhys.Core;
 using AcPhys.Spec.Adapters;
 using AcPhys.Spec.Cases;
+using AcPhys.Spec.Dat;
 
 namespace AcPhys.Spec.Invariants;
 
@@ -85,6 +86,7 @@ public static class ConformanceInvariants
 
         var reference = Conformance.ReferenceFor(impl);
         bool superset = impl.Indoor.AceKeepsStaleCells;
+        var scene = (impl.Ops & Op.DatRecords) != 0 ? DatRoundTrip.Of(w.Scene) : w.Scene; // what the implementation was sent
         foreach (bool loadCells in (impl.Ops & Op.FindCellTransition) != 0 ? [false, true] : new[] { false })
         {
             var trace = SceneWalkRunner.Run(impl, w, loadCells);
@@ -93,9 +95,9 @@ public static class ConformanceInvariants
                 var s = trace[i];
                 var current = i == 0 ? CellId.None : trace[i - 1].Current;
                 var got = s.Answer!;
-                var want = reference.FindCell(w.Scene, s.Query.Cell, s.Query.Spheres, current, loadCells);
+                var want = reference.FindCell(scene, s.Query.Cell, s.Query.Spheres, current, loadCells);
                 if (Conformance.Difference(got, want, superset) is string why
-                    && Conformance.Probes(s.Query.Spheres).All(p => Conformance.Difference(got, reference.FindCell(w.Scene, s.Query.Cell, p, current, loadCells), superset) is not null))
+                    && Conformance.Probes(s.Query.Spheres).All(p => Conformance.Difference(got, reference.FindCell(scene, s.Query.Cell, p, current, loadCells), superset) is not null))
                 {
                     string kind = loadCells ? "transition" : "static";
                     return Outcome.Violated($"step {s.Index} ({kind} find_cell from {s.Query.Cell}, spheres [{string.Join("; ", s.Query.Spheres.Select(OutdoorCase.Format))}], current {current}): {why}");

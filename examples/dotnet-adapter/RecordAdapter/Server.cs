@@ -1,0 +1,210 @@
+using System.Buffers;
+using System.Numerics;
+using System.Text;
+using System.Text.Encodings.Web;
+using System.Text.Json;
+using AcPhys.Core;
+using AcPhys.Core.Text;
+
+namespace RecordAdapter;
+
+/// <summary>
+/// Protocol v1 (docs/protocol.md) for scenes sent as dat records: <c>hello</c>, <c>load_scene</c> with <c>dat</c>,
+/// <c>find_cell</c> on a loaded scene, <c>unload_scene</c>. Every request gets one answer line; anything this adapter
+/// cannot read is answered <c>{"error": ...}</c> and the next request is served as usual.
+/// </summary>
+internal sealed class Server
+{
+    private const int MaxScenes = 16;
+    private const string HelloAnswer = """{"protocol":1,"name":"record-adapter (example)","ops":["find_cell_scene","find_cell_transition","load_scene","dat_records"],"pick":"retail"}""";
+    private static readonly JsonWriterOptions Compact = new() { Encoder = JavaScriptEncoder.UnsafeRelaxedJsonEscaping };
+
+    private readonly Dictionary<string, CellScene> scenes = new(StringComparer.Ordinal);
+    private readonly CellArray array = new();
+    private int loads;
+
+    /// <summary>Answers one request line.</summary>
+    /// <param name="line">The request.</param>
+    /// <returns>The answer line (no newline).</returns>
+    public string Answer(string line)
+    {
+        try
+        {
+            using var doc = JsonDocument.Parse(line);
+            var request = doc.RootElement;
+            if (request.ValueKind != JsonValueKind.Object)
+            {
+                return Error("a request must be a JSON object");
+            }
+
+            return Text(request, "op") switch
+            {
+                "hello" => Hello(request),
+                "load_scene" => LoadScene(request),
+                "find_cell" => FindCell(request),
+                "unload_scene" => UnloadScene(request),
+                var op => Error($"unknown op \"{op}\""),
+            };
+        }
+        catch (JsonException e)
+        {
+            return Error("not JSON: " + e.Message);
+        }
+        catch (InputException e)
+        {
+            return Error(e.Message);
+        }
+        catch (Exception e) when (e is not OutOfMemoryException)
+        {
+            return Error($"internal error: {e.GetType().Name}: {e.Message}");
+        }
+    }
+
+    private static string Hello(JsonElement request)
+    {
+        bool ok = !request.TryGetProperty("protocol", out var p) || (p.ValueKind == JsonValueKind.Number && p.TryGetInt32(out int v) && v == 1);
+        return ok ? HelloAnswer : Error($"protocol {p.GetRawText()} not supported (this adapter speaks 1)");
+    }
+
+    private static string Error(string message) => Line(w => w.WriteString("error", message));
+
+    private static string Line(Action<Utf8JsonWriter> fields)
+    {
+        var buffer = new ArrayBufferWriter<byte>(256);
+        using (var w = new Utf8JsonWriter(buffer, Compact))
+        {
+            w.WriteStartObject();
+            fields(w);
+            w.WriteEndObject();
+        }
+
+        return Encoding.UTF8.GetString(buffer.WrittenSpan);
+    }
+
+    private static string Text(JsonElement obj, string name) =>
+        obj.TryGetProperty(name, out var v) && v.ValueKind == JsonValueKind.String ? v.GetString()! : throw new InputException($"field \"{name}\" must be a string");
+
+    private static CellId Cell(JsonElement v, string name) =>
+        v.ValueKind == JsonValueKind.String && CellIdText.TryParse(v.GetString(), out var id) ? id : throw new InputException($"field \"{name}\" must be a cell id \"0xAABBCCCC\"");
+
+    // A float32: a JSON number read as double and rounded, or one of the strings "NaN", "Infinity", "-Infinity".
+    private static float Float(JsonElement s, string name)
+    {
+        if (s.TryGetProperty(name, out var v))
+        {
+            if (v.ValueKind == JsonValueKind.Number && v.TryGetDouble(out double d))
+            {
+                return (float)d;
+            }
+
+            if (v.ValueKind == JsonValueKind.String)
+            {
+                switch (v.GetString())
+                {
+                    case "NaN":
+                        return float.NaN;
+                    case "Infinity":
+                        return float.PositiveInfinity;
+                    case "-Infinity":
+                        return float.NegativeInfinity;
+                }
+            }
+        }
+
+        throw new InputException($"sphere field \"{name}\" must be a number or \"NaN\" / \"Infinity\" / \"-Infinity\"");
+    }
+
+    private string LoadScene(JsonElement request)
+    {
+        if (!request.TryGetProperty("dat", out var dat))
+        {
+            return Error("load_scene: this adapter reads scenes as dat records only (field \"dat\": {manifest, records})");
+        }
+
+        if (scenes.Count >= MaxScenes)
+        {
+            return Error($"load_scene: {MaxScenes} scenes already loaded: unload_scene one first");
+        }
+
+        CellScene scene;
+        try
+        {
+            scene = SceneLoader.Load(dat);
+        }
+        catch (InputException e)
+        {
+            return Error("load_scene: invalid dat records: " + e.Message);
+        }
+
+        string id = "r" + (++loads).ToString(System.Globalization.CultureInfo.InvariantCulture);
+        scenes.Add(id, scene);
+        return Line(w => w.WriteString("scene_id", id));
+    }
+
+    private string UnloadScene(JsonElement request)
+    {
+        string id = Text(request, "scene_id");
+        return scenes.Remove(id) ? """{"ok":true}""" : Error($"unload_scene: unknown scene_id \"{id}\"");
+    }
+
+    private string FindCell(JsonElement request)
+    {
+        if (!request.TryGetProperty("scene_id", out _))
+        {
+            return Error("find_cell: this adapter answers loaded scenes only (field \"scene_id\" from load_scene)");
+        }
+
+        string id = Text(request, "scene_id");
+        if (!scenes.TryGetValue(id, out var scene))
+        {
+            return Error($"find_cell: unknown scene_id \"{id}\" (load_scene first)");
+        }
+
+        var cell = Cell(request.TryGetProperty("cell", out var c) ? c : default, "cell");
+        var current = request.TryGetProperty("current", out var cur) && cur.ValueKind != JsonValueKind.Null ? Cell(cur, "current") : CellId.None;
+        bool loadCells = request.TryGetProperty("load_cells", out var lc) && lc.ValueKind switch
+        {
+            JsonValueKind.True => true,
+            JsonValueKind.False => false,
+            _ => throw new InputException("field \"load_cells\" must be true or false"),
+        };
+        if (!request.TryGetProperty("spheres", out var list) || list.ValueKind != JsonValueKind.Array)
+        {
+            throw new InputException("field \"spheres\" must be an array of {x, y, z, r}");
+        }
+
+        var spheres = list.EnumerateArray().Select(s => s.ValueKind == JsonValueKind.Object
+            ? new Sphere(new Vector3(Float(s, "x"), Float(s, "y"), Float(s, "z")), Float(s, "r"))
+            : throw new InputException("field \"spheres\" must be an array of {x, y, z, r}")).ToArray();
+
+        // What ReferenceAdapter does for a scene: find_cell_list with the retail pick; load_cells turns the filter off.
+        var result = SceneQuery.FindCellList(array, scene, cell, spheres, current, new CellQueryOptions(PickPolicy.Retail, true, loadCells));
+        return Line(w =>
+        {
+            w.WriteStartArray("cells");
+            for (int i = 0; i < array.Count; i++)
+            {
+                w.WriteStringValue(CellIdText.Format(array[i].Id));
+            }
+
+            w.WriteEndArray();
+            if (result.Containing.IsNone)
+            {
+                w.WriteNull("containing");
+            }
+            else
+            {
+                w.WriteString("containing", CellIdText.Format(result.Containing));
+            }
+
+            w.WriteStartArray("loaded");
+            for (int i = 0; i < array.Count; i++)
+            {
+                w.WriteBooleanValue(array[i].Loaded);
+            }
+
+            w.WriteEndArray();
+            w.WriteBoolean("hits_interior_cell", result.HitsInteriorCell);
+        });
+    }
+}

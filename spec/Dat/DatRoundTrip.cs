@@ -1,0 +1,25 @@
+using System.Runtime.CompilerServices;
+using AcPhys.Spec.Scenes;
+
+namespace AcPhys.Spec.Dat;
+
+/// <summary>
+/// A scene as an implementation that reads dat records sees it: read(write(scene)), cached per scene instance. Portal
+/// planes come back as their polygons' planes, rebuilt from float32 vertices (docs/dat-scenes.md, "Round trip"), so an
+/// oblique portal's plane may differ from the JSON scene's by float32 rounding; the conformance reference answers on
+/// this form for an implementation that announced <c>dat_records</c>, so the rounding is never read as a deviation.
+/// </summary>
+public static class DatRoundTrip
+{
+    private static readonly ConditionalWeakTable<Scene, Scene> Cache = [];
+
+    /// <summary>Returns the scene as the records give it back.</summary>
+    /// <param name="scene">A valid scene.</param>
+    /// <returns>read(write(scene)).</returns>
+    public static Scene Of(Scene scene) => Cache.GetValue(scene, s =>
+    {
+        var export = DatSceneWriter.Write(s, "round trip", "conformance");
+        var bytes = export.Records.ToDictionary(r => r.Record, r => r.Bytes);
+        return DatSceneReader.Read(export.Manifest, r => bytes[r]);
+    });
+}
