@@ -57,7 +57,7 @@ public sealed class WireTests
         Assert.StartsWith("{\"error\":\"unknown op", server.Answer("{\"op\":\"teleport\"}"), StringComparison.Ordinal);
         Assert.StartsWith("{\"error\":\"malformed request: not JSON", server.Answer("hello"), StringComparison.Ordinal);
         using var hello = JsonDocument.Parse(server.Answer("{\"op\":\"hello\",\"protocol\":1}"));
-        Assert.Equal(12, hello.RootElement.GetProperty("ops").GetArrayLength()); // protocol v1 with find_cell_scene, find_cell_transition and load_scene
+        Assert.Equal(13, hello.RootElement.GetProperty("ops").GetArrayLength()); // protocol v1 with find_cell_scene, find_cell_transition, load_scene and dat_records
         Assert.StartsWith("{\"error\":\"protocol 2 not supported", server.Answer("{\"op\":\"hello\",\"protocol\":2}"), StringComparison.Ordinal);
     }
 
@@ -214,5 +214,16 @@ public sealed class WireTests
         }
 
         Assert.StartsWith("{\"error\":\"64 scenes already loaded", Load(99), StringComparison.Ordinal);
+    }
+
+    [Fact(DisplayName = "A request line that is JSON but not an object, or names a huge unknown op, gets a short clear error (issue #19)")]
+    public void NonObjectsAndHugeOpNamesAreShortErrors()
+    {
+        var server = new ProtocolServer(ReferenceAdapter.Instance);
+        Assert.Equal("{\"error\":\"malformed request: expected a JSON object, got Array\"}", server.Answer("[1,2,3]"));
+        Assert.Equal("{\"error\":\"malformed request: expected a JSON object, got Null\"}", server.Answer("null"));
+        string huge = server.Answer($"{{\"op\":\"{new string('x', 1 << 20)}\"}}");
+        Assert.StartsWith("{\"error\":\"unknown op", huge, StringComparison.Ordinal);
+        Assert.True(huge.Length < 200, $"the error echoes {huge.Length} characters");
     }
 }

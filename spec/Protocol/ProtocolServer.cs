@@ -100,7 +100,7 @@ public sealed class ProtocolServer(ICellPhysics impl)
         var known = OpNames.Parse([op], out _);
         if (known == Op.None)
         {
-            return Error($"unknown op \"{op}\"");
+            return Error($"unknown op \"{Wire.Brief(op, 64)}\"");
         }
 
         // find_cell_scene is announced, never sent: a scene travels in find_cell (docs/protocol.md, "Scenes").
@@ -210,7 +210,7 @@ public sealed class ProtocolServer(ICellPhysics impl)
                 }
 
             default:
-                return Error($"unknown op \"{op}\"");
+                return Error($"unknown op \"{Wire.Brief(op, 64)}\"");
         }
     }
 

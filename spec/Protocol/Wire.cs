@@ -52,10 +52,11 @@ public static class Wire
             throw new WireException("not JSON: " + e.Message, e);
         }
 
-        if (doc.RootElement.ValueKind != JsonValueKind.Object)
+        var kind = doc.RootElement.ValueKind;
+        if (kind != JsonValueKind.Object)
         {
-            doc.Dispose();
-            throw new WireException($"expected a JSON object, got {doc.RootElement.ValueKind}");
+            doc.Dispose(); // the kind is read first: a disposed document's root cannot be asked (issue #19)
+            throw new WireException($"expected a JSON object, got {kind}");
         }
 
         return doc;

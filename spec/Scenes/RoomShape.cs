@@ -57,18 +57,24 @@ public static class RoomShapes
         };
     }
 
-    /// <summary>Returns the scene with every single-box cell reshaped.</summary>
+    /// <summary>Returns the scene with every box cell reshaped (see the per-cell overload).</summary>
     /// <param name="scene">The scene.</param>
     /// <param name="shape">The shape of every room.</param>
-    /// <returns>The reshaped scene (the same instance for <see cref="RoomShape.Box"/>).</returns>
-    public static Scene Shaped(Scene scene, RoomShape shape) => shape == RoomShape.Box ? scene : Shaped(scene, _ => shape);
+    /// <returns>The reshaped scene.</returns>
+    public static Scene Shaped(Scene scene, RoomShape shape) => Shaped(scene, _ => shape);
 
-    /// <summary>Returns the scene with each single-box cell reshaped by a per-cell choice; other cells are kept.</summary>
+    /// <summary>
+    /// Returns the scene with each cell made of box pieces reshaped by a per-cell choice inside the box they fill (a
+    /// generated L room or stairwell is first taken back to its bounding box, so <see cref="RoomShape.Box"/> really
+    /// means box rooms); cells with plane pieces are kept.
+    /// </summary>
     /// <param name="scene">The scene.</param>
     /// <param name="shapeOf">The shape of a cell.</param>
     /// <returns>The reshaped scene.</returns>
     public static Scene Shaped(Scene scene, Func<CellId, RoomShape> shapeOf) => scene with
     {
-        Cells = [.. scene.Cells.Select(c => c.Pieces is [{ Box: { } box }] ? c with { Pieces = Pieces(shapeOf(c.Id), box.Min, box.Max) } : c)],
+        Cells = [.. scene.Cells.Select(c => c.Pieces.All(p => p.Box is not null)
+            ? c with { Pieces = Pieces(shapeOf(c.Id), c.Pieces.Aggregate(c.Pieces[0].Box!.Value.Min, (m, p) => Vector3.Min(m, p.Box!.Value.Min)), c.Pieces.Aggregate(c.Pieces[0].Box!.Value.Max, (m, p) => Vector3.Max(m, p.Box!.Value.Max))) }
+            : c)],
     };
 }
