@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# AFL++ campaign over the AcPhys .NET code, through the SharpFuzz stand-in in fuzz/ (see docs/fuzzing.md).
+# AFL++ campaign over the AcPhys .NET code, through SharpFuzz (see docs/fuzzing.md).
 #
 #   fuzz/run.sh [--minutes N] [--jobs J] [--target T] [--fault F] [--timeout-ms MS] [--seeds DIR]
 #               [--name NAME] [--fail-on-crash]
@@ -77,13 +77,14 @@ build_and_instrument() {
     say "publishing harness and instrumenter (Release) into $build"
     dotnet publish "$root/fuzz/AcPhys.Fuzz/AcPhys.Fuzz.csproj" -c Release -o "$build/harness" --nologo \
         >"$logs/publish-harness.log" 2>&1 || { tail -n 30 "$logs/publish-harness.log" >&2; die "publish of the harness failed"; }
-    dotnet publish "$root/fuzz/AcPhys.Fuzz.Instrument/AcPhys.Fuzz.Instrument.csproj" -c Release -o "$build/instrument" --nologo \
+    dotnet publish "$root/fuzz/AcPhys.Fuzz.Instrumenter/AcPhys.Fuzz.Instrumenter.csproj" -c Release -o "$build/instrument" --nologo \
         >"$logs/publish-instrument.log" 2>&1 || { tail -n 30 "$logs/publish-instrument.log" >&2; die "publish of the instrumenter failed"; }
     local assemblies=()
     for dll in AcPhys.Core.dll AcPhys.Spec.dll AcPhys.Fuzz.Toy.dll; do
         [[ -f "$build/harness/$dll" ]] && assemblies+=("$build/harness/$dll")
     done
-    "$build/instrument/AcPhys.Fuzz.Instrument" "${assemblies[@]}" | tee "$logs/instrument.log" | sed 's/^/[fuzz]   /'
+    # One process for all three: SharpFuzz's block ids come from one fixed-seed generator per process.
+    "$build/instrument/AcPhys.Fuzz.Instrumenter" "${assemblies[@]}" | tee "$logs/instrument.log" | sed 's/^/[fuzz]   /'
 }
 
 prepare_seeds() {

@@ -1,6 +1,6 @@
 namespace AcPhys.Cli.Fuzz;
 
-/// <summary>Publishes the harness and the instrumenter (Release) and instruments the physics assemblies in place (docs/fuzzing.md).</summary>
+/// <summary>Publishes the harness and the SharpFuzz instrumenter (Release) and instruments the physics assemblies in place, all in one instrumenter process (docs/fuzzing.md).</summary>
 internal static class HarnessBuild
 {
     /// <summary>The assemblies that get AFL edge probes: the physics, the invariants and faults, the toy.</summary>
@@ -21,9 +21,9 @@ internal static class HarnessBuild
         Directory.CreateDirectory(s.LogDir);
         say($"build: publishing the harness and the instrumenter (Release) into {s.BuildDir}");
         Publish(s, "fuzz/AcPhys.Fuzz/AcPhys.Fuzz.csproj", "harness");
-        Publish(s, "fuzz/AcPhys.Fuzz.Instrument/AcPhys.Fuzz.Instrument.csproj", "instrument");
+        Publish(s, "fuzz/AcPhys.Fuzz.Instrumenter/AcPhys.Fuzz.Instrumenter.csproj", "instrument");
         var dlls = Instrumented.Select(d => Path.Combine(s.BuildDir, "harness", d)).Where(File.Exists).ToArray();
-        var (code, output) = AflTools.Run(Path.Combine(s.BuildDir, "instrument", "AcPhys.Fuzz.Instrument"), dlls);
+        var (code, output) = AflTools.Run(Path.Combine(s.BuildDir, "instrument", "AcPhys.Fuzz.Instrumenter"), dlls);
         File.WriteAllText(Path.Combine(s.LogDir, "instrument.log"), output);
         if (code != 0)
         {

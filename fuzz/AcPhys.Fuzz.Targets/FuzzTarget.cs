@@ -24,6 +24,12 @@ public abstract class FuzzTarget
     /// <summary>Gets tokens for afl-fuzz's <c>-x</c> dictionary (empty: none).</summary>
     public virtual IReadOnlyList<string> Dictionary => [];
 
+    /// <summary>
+    /// Gets a value indicating whether an input can run past afl-fuzz's timeout. The harness then serves afl-fuzz with
+    /// SharpFuzz's out-of-process fork server (a timeout kills a child, not the server); otherwise in-process (faster).
+    /// </summary>
+    public virtual bool MayHang => false;
+
     /// <summary>Gets a value indicating whether the target can run against a planted fault.</summary>
     public bool TakesFaults => Kind == TargetKind.Physics;
 

@@ -18,6 +18,9 @@ public sealed class SceneWalkTarget : PhysicsTarget<SceneWalk>
     public override string Name => "scene";
 
     /// <inheritdoc/>
+    public override bool MayHang => true;
+
+    /// <inheritdoc/>
     public override string Description => "every indoor invariant on a scene walk (SceneCodec: cottage or dungeon, placement, body, route)";
 
     // Plain scenes: the zero input (a one-room cottage, walked into), a 6 m room entered and left, a dungeon run, and

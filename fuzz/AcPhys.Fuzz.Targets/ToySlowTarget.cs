@@ -7,6 +7,9 @@ public sealed class ToySlowTarget : ToyTarget
     public override string Name => "toy-slow";
 
     /// <inheritdoc/>
+    public override bool MayHang => true;
+
+    /// <inheritdoc/>
     public override string Description => "timeout smoke test: as toy, but inputs starting with 'Z' take 300 ms";
 
     /// <inheritdoc/>

@@ -1,48 +1,54 @@
 using System.Reflection;
 using AcPhys.Core;
-using AcPhys.Fuzz.Instrument;
-using AcPhys.Fuzz.Runtime;
 using AcPhys.Fuzz.Toy;
+using SharpFuzz;
 using Xunit;
+using SharpTrace = SharpFuzz.Common.Trace;
 
 namespace AcPhys.Fuzz.Tests;
 
+/// <summary>SharpFuzz's instrumentation of the assemblies the campaigns instrument (copies in a temp folder).</summary>
 [Collection(TraceCollection.Name)]
-public sealed class InstrumenterTests : IDisposable
+public sealed unsafe class InstrumenterTests : IDisposable
 {
+    private const int MapSize = 1 << 16;
+
     private readonly string directory = Directory.CreateTempSubdirectory("acphys-instrument-").FullName;
-    private readonly AssemblyInstrumenter instrumenter = new(typeof(Trace).Assembly.Location, seed: 0);
+    private readonly byte[] map = GC.AllocateArray<byte>(MapSize, pinned: true);
+    private readonly byte* previousMap = SharpTrace.SharedMem;
+
+    public InstrumenterTests()
+    {
+        fixed (byte* p = map)
+        {
+            SharpTrace.SharedMem = p; // pinned: the address stays valid
+        }
+    }
 
     private delegate int Parser(ReadOnlySpan<byte> data);
 
-    public void Dispose() => Directory.Delete(directory, recursive: true);
-
-    [Fact]
-    public void Toy_is_instrumented_once_then_skipped()
+    public void Dispose()
     {
-        string toy = CopyOf(typeof(MagicHeader).Assembly);
-
-        var first = instrumenter.Instrument(toy);
-        var second = instrumenter.Instrument(toy);
-
-        Assert.Null(first.Skipped);
-        Assert.Equal(1, first.Methods);
-        Assert.True(first.Blocks >= 9, $"{first.Blocks} blocks"); // entry + 4 ifs × (taken, fall-through)
-        Assert.Equal("already instrumented", second.Skipped);
+        SharpTrace.SharedMem = previousMap;
+        Directory.Delete(directory, recursive: true);
     }
 
     [Fact]
-    public void Runtime_is_never_instrumented()
+    public void Toy_is_instrumented_once_then_refused()
     {
-        string runtime = CopyOf(typeof(Trace).Assembly);
+        string toy = CopyOf(typeof(MagicHeader).Assembly);
 
-        Assert.Equal("the fuzzing runtime itself", instrumenter.Instrument(runtime).Skipped);
+        var types = Fuzzer.Instrument(toy, _ => true, Options.Value).ToList();
+
+        Assert.Contains(typeof(MagicHeader).FullName!, types);
+        var again = Assert.Throws<InstrumentationException>(() => Fuzzer.Instrument(toy, _ => true, Options.Value).ToList());
+        Assert.Contains("already instrumented", again.Message, StringComparison.Ordinal);
     }
 
     [Fact]
     public void Instrumented_toy_keeps_its_behaviour_and_separates_paths()
     {
-        instrumenter.Instrument(CopyOf(typeof(MagicHeader).Assembly));
+        _ = Fuzzer.Instrument(CopyOf(typeof(MagicHeader).Assembly), _ => true, Options.Value).ToList();
         var context = new IsolatedContext(directory);
         try
         {
@@ -69,7 +75,7 @@ public sealed class InstrumenterTests : IDisposable
     [Fact]
     public void Instrumented_core_agrees_with_the_original()
     {
-        instrumenter.Instrument(CopyOf(typeof(LandDefs).Assembly));
+        _ = Fuzzer.Instrument(CopyOf(typeof(LandDefs).Assembly), _ => true, Options.Value).ToList();
         var context = new IsolatedContext(directory);
         try
         {
@@ -79,7 +85,7 @@ public sealed class InstrumenterTests : IDisposable
             var outside = landDefs.GetMethod(nameof(LandDefs.GetOutsideLcoord))!;
             var toGid = landDefs.GetMethod(nameof(LandDefs.LcoordToGid), [typeof(int), typeof(int)])!;
             var random = new Random(1234);
-            Trace.ClearMap();
+            Array.Clear(map);
 
             for (int i = 0; i < 2000; i++)
             {
@@ -94,7 +100,8 @@ public sealed class InstrumenterTests : IDisposable
                 Assert.Equal(LandDefs.LcoordToGid(gx, gy).ToString(), toGid.Invoke(null, [gx, gy])!.ToString());
             }
 
-            Assert.True(Trace.CountEdges() > 10, $"{Trace.CountEdges()} edges");
+            int edges = map.Count(b => b != 0);
+            Assert.True(edges > 10, $"{edges} edges");
         }
         finally
         {
@@ -102,24 +109,18 @@ public sealed class InstrumenterTests : IDisposable
         }
     }
 
-    private static unsafe byte[] Edges(Action action)
+    private byte[] Edges(Action action)
     {
-        Trace.ClearMap();
-        Trace.ResetPrevious();
+        Array.Clear(map);
+        SharpTrace.PrevLocation = 0;
         action();
-        return new ReadOnlySpan<byte>(Trace.Map, Trace.MapSize).ToArray();
+        return (byte[])map.Clone();
     }
 
     private string CopyOf(Assembly assembly)
     {
         string target = Path.Combine(directory, Path.GetFileName(assembly.Location));
         File.Copy(assembly.Location, target, overwrite: true);
-        string pdb = Path.ChangeExtension(assembly.Location, ".pdb");
-        if (File.Exists(pdb))
-        {
-            File.Copy(pdb, Path.ChangeExtension(target, ".pdb"), overwrite: true);
-        }
-
         return target;
     }
 }

@@ -1,5 +1,4 @@
 using System.Security.Cryptography;
-using AcPhys.Fuzz.Runtime;
 using AcPhys.Spec.Corpus;
 
 namespace AcPhys.Fuzz;
@@ -9,8 +8,9 @@ namespace AcPhys.Fuzz;
 /// (edge, hit-count bucket); the inputs already in the seed folder are kept, and a candidate is added, smallest first,
 /// only when it covers a tuple nothing kept covers. So the folder only grows, and only with inputs that add coverage.
 /// </summary>
-internal static unsafe class Cmin
+internal static class Cmin
 {
+
     /// <summary>Merges candidate inputs into a seed folder.</summary>
     /// <param name="test">The test (correct core).</param>
     /// <param name="seedDir">The seed folder (created; kept files are never removed).</param>
@@ -75,8 +75,7 @@ internal static unsafe class Cmin
 
     private static (List<int> Tuples, bool Crashed) Tuples(Action<ReadOnlySpan<byte>> test, byte[] data)
     {
-        Trace.ClearMap();
-        Trace.ResetPrevious();
+        PrivateMap.Reset();
         bool crashed = false;
         try
         {
@@ -90,7 +89,7 @@ internal static unsafe class Cmin
         }
 
         var tuples = new List<int>();
-        var map = new ReadOnlySpan<byte>(Trace.Map, Trace.MapSize);
+        var map = PrivateMap.Current;
         for (int i = 0; i < map.Length; i++)
         {
             if (map[i] != 0)

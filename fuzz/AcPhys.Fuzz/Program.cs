@@ -1,8 +1,8 @@
 using AcPhys.Fuzz;
-using AcPhys.Fuzz.Runtime;
 using AcPhys.Fuzz.Targets;
+using SharpFuzz;
 
-// AcPhys.Fuzz TARGET [INPUT]            serve afl-fuzz (INPUT is afl's @@ file; stdin without it), or run INPUT once
+// AcPhys.Fuzz TARGET [INPUT]            serve afl-fuzz on stdin (SharpFuzz fork server), or run INPUT once
 // AcPhys.Fuzz replay TARGET FILE...     replay saved inputs; exit 1 if any crashes
 // AcPhys.Fuzz seeds TARGET DIR          write the target's built-in seed inputs into DIR
 // AcPhys.Fuzz dict TARGET FILE          write the target's afl-fuzz dictionary (-x) into FILE (nothing when it has none)
@@ -12,6 +12,8 @@ using AcPhys.Fuzz.Targets;
 // TARGET may also come from ACPHYS_FUZZ_TARGET; the planted fault from ACPHYS_FAULT (unset or empty: correct core).
 const string Usage = "usage: AcPhys.Fuzz TARGET [INPUT] | replay TARGET FILE... | seeds TARGET DIR | dict TARGET FILE | cmin TARGET SEEDS DIR... | bench TARGET [N] | list";
 
+// SharpFuzz's probes need a map before any instrumented code runs; Fuzzer.Run swaps in afl-fuzz's shared memory.
+PrivateMap.Attach();
 string? fault = Environment.GetEnvironmentVariable("ACPHYS_FAULT") is { Length: > 0 } f ? f : null;
 var rest = new Queue<string>(args);
 string? command = rest.Count > 0 ? rest.Dequeue() : Environment.GetEnvironmentVariable("ACPHYS_FUZZ_TARGET");
@@ -105,7 +107,7 @@ switch (command)
             int crashes = 0;
             foreach (string file in rest)
             {
-                crashes += Fuzzer.RunOnce(file, test, Console.Out);
+                crashes += Replay.Run(file, test, Console.Out);
             }
 
             Console.WriteLine($"replayed {rest.Count} input(s): {crashes} crash(es)");
@@ -120,7 +122,32 @@ switch (command)
                 return 2;
             }
 
-            return Create(target, fault) is { } test ? Fuzzer.Run(test, rest.Count > 0 ? rest.Dequeue() : null) : 2;
+            if (Create(target, fault) is not { } test)
+            {
+                return 2;
+            }
+
+            if (rest.Count > 0)
+            {
+                // One input from a file (afl's @@, a saved case): an exception escapes, as in a crash under afl-fuzz.
+                test(File.ReadAllBytes(rest.Dequeue()));
+                return 0;
+            }
+
+            // Under afl-fuzz (__AFL_SHM_ID set) SharpFuzz serves inputs from stdin until afl-fuzz goes away; otherwise
+            // it runs stdin once. An exception escaping the test is reported to afl-fuzz as a crash. Targets whose
+            // inputs can outlast the timeout run out of process: afl-fuzz kills the timed-out child, not the server.
+            Action<Stream> serve = Replay.FromStream(test);
+            if (target.MayHang)
+            {
+                Fuzzer.OutOfProcess.Run(serve);
+            }
+            else
+            {
+                Fuzzer.Run(serve);
+            }
+
+            return 0;
         }
 }
 
