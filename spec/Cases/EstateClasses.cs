@@ -122,25 +122,25 @@ public static class EstateClasses
             yield return "wall:sealed";
         }
 
+        var doorRooms = main.Portals.Where(b => b.Portal != 0xFFFF).Select(b => b.Cell).ToHashSet(); // valid doors' low words
         if (r.Route == SceneRoute.Facade)
         {
             yield return "walk:facade";
             var passed = FacadeRooms(r, w, at);
-            var doors = main.Portals.Where(b => b.Portal != 0xFFFF).Select(b => b.Cell - 0x100).ToHashSet();
-            if (links.Except(open).Any(l => passed.Contains(l.A) && passed.Contains(l.B) && doors.Contains(l.A) && doors.Contains(l.B)))
+            bool DoorRoomPassed(int room) => passed.Contains(room) && doorRooms.Contains((ushort)(0x100 + room));
+            if (links.Except(open).Any(l => DoorRoomPassed(l.A) && DoorRoomPassed(l.B)))
             {
                 yield return "walk:facade-sealed-seam";
             }
-
         }
 
-        if (SecondPieceOnly(p, w, home))
+        var secondPieceOnly = SecondPieceOnly(p, w, home);
+        if (secondPieceOnly.Count > 0)
         {
             yield return "walk:second-piece-only";
         }
 
-        var doorRooms = main.Portals.Where(b => b.Portal != 0xFFFF).Select(b => b.Cell).ToHashSet();
-        if (SecondPieceOnly(p, w, [.. home.Where(c => doorRooms.Contains(c.Id.Low))]))
+        if (secondPieceOnly.Overlaps(doorRooms))
         {
             yield return "walk:door-room-second-piece";
         }
@@ -159,16 +159,30 @@ public static class EstateClasses
         }
     }
 
-    // Whether sphere 0 ever reaches an L room's second piece without reaching its first (the two differ there: facts §5.7).
-    private static bool SecondPieceOnly(EstatePlan p, SceneWalk w, List<SceneCell> home)
+    // The L rooms (low words) whose second piece sphere 0 reaches without reaching their first (the two differ there: facts §5.7).
+    private static HashSet<ushort> SecondPieceOnly(EstatePlan p, SceneWalk w, List<SceneCell> home)
     {
-        var ls = home.Where(c => c.Pieces.Count > 1).Select(c => (Frame: new Frame(c.Origin, c.Rotation), First: c.Pieces[0].ToConvex().Bounds, Second: c.Pieces[1].ToConvex().Bounds)).ToList();
+        var ls = home.Where(c => c.Pieces.Count > 1).Select(c => (c.Id.Low, Frame: new Frame(c.Origin, c.Rotation), First: c.Pieces[0].ToConvex().Bounds, Second: c.Pieces[1].ToConvex().Bounds)).ToList();
         float r = w.Walk.Body[0].Radius;
-        return ls.Count > 0 && Centres(p, w).Any(g => ls.Any(l =>
+        var reached = new HashSet<ushort>();
+        if (ls.Count == 0)
         {
-            var q = l.Frame.GlobalToLocal(g);
-            return Distance(l.Second, q) < r && Distance(l.First, q) > r + 0.02f;
-        }));
+            return reached;
+        }
+
+        foreach (var g in Centres(p, w))
+        {
+            foreach (var l in ls)
+            {
+                var q = l.Frame.GlobalToLocal(g);
+                if (Distance(l.Second, q) < r && Distance(l.First, q) > r + 0.02f)
+                {
+                    reached.Add(l.Low);
+                }
+            }
+        }
+
+        return reached;
     }
 
     private static float Distance(Box b, Vector3 q) => Vector3.Distance(Vector3.Clamp(q, b.Min, b.Max), q);

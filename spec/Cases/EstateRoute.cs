@@ -63,6 +63,7 @@ public static class EstateRoute
             var side = r.Target % 2 == 0 ? entry.Side : EstateGrid.FreeSides(m.Positions, entry.Room).FirstOrDefault(f => f != entry.Side, entry.Side);
             return (home, [.. Facade(m, entry.Room, side, m.Doors[x], r.Radius).Select(m.ToBlock)]);
         }
+
         var inside = new List<Vector3> { entry.Outside, entry.Point, m.Centres[entry.Room] };
         bool back = r.Route == SceneRoute.EnterAndBack, stay = r.Route == SceneRoute.Enter;
         int target = back || stay ? Math.Abs(r.Target) % m.Centres.Count : m.Doors[x].Room;

@@ -20,63 +20,71 @@ public static class DatManifestJson
         using var buffer = new MemoryStream();
         using (var w = new Utf8JsonWriter(buffer, new JsonWriterOptions { Indented = true, Encoder = System.Text.Encodings.Web.JavaScriptEncoder.UnsafeRelaxedJsonEscaping }))
         {
-            w.WriteStartObject();
-            w.WriteString("format", DatManifest.FormatName);
-            w.WriteNumber("version", DatManifest.CurrentVersion);
-            w.WriteString("title", m.Title);
-            w.WriteString("source", m.Source);
-            w.WriteStartArray("records");
-            foreach (var r in m.Records)
-            {
-                w.WriteStartObject();
-                w.WriteString("file", r.File);
-                w.WriteString("id", RecordIds.Text(r.Id));
-                w.WriteString("dat", r.PortalDat ? "portal" : "cell");
-                w.WriteString("type", r.Type.ToString());
-                w.WriteEndObject();
-            }
-
-            w.WriteEndArray();
-            Strings(w, "blocks", m.Blocks.Select(b => b.ToString()));
-            Strings(w, "unloadedBlocks", m.UnloadedBlocks.Select(b => b.ToString()));
-            Strings(w, "unloadedCells", m.UnloadedCells.Select(CellIdText.Format));
-            w.WriteStartArray("visibleElsewhere");
-            foreach (var (cell, visible) in m.VisibleElsewhere)
-            {
-                w.WriteStartObject();
-                w.WriteString("cell", CellIdText.Format(cell));
-                Strings(w, "visible", visible.Select(CellIdText.Format));
-                w.WriteEndObject();
-            }
-
-            w.WriteEndArray();
-            if (m.Header is { } h)
-            {
-                w.WriteStartObject("corpus");
-                if (h.Invariant is not null)
-                {
-                    w.WriteString("invariant", h.Invariant);
-                }
-
-                w.WriteString("foundBy", h.FoundBy);
-                if (h.Seed is not null)
-                {
-                    w.WriteString("seed", h.Seed);
-                }
-
-                Strings(w, "catches", h.Catches);
-                w.WriteEndObject();
-            }
-
-            if (m.Walk is { } walk)
-            {
-                WalkJson.Write(w, walk);
-            }
-
-            w.WriteEndObject();
+            Write(w, m);
         }
 
         return Encoding.UTF8.GetString(buffer.ToArray()) + "\n";
+    }
+
+    /// <summary>Writes a manifest as one JSON object value (the writer decides indentation: a protocol line is compact).</summary>
+    /// <param name="w">The writer, where a value may go.</param>
+    /// <param name="m">The manifest.</param>
+    public static void Write(Utf8JsonWriter w, DatManifest m)
+    {
+        w.WriteStartObject();
+        w.WriteString("format", DatManifest.FormatName);
+        w.WriteNumber("version", DatManifest.CurrentVersion);
+        w.WriteString("title", m.Title);
+        w.WriteString("source", m.Source);
+        w.WriteStartArray("records");
+        foreach (var r in m.Records)
+        {
+            w.WriteStartObject();
+            w.WriteString("file", r.File);
+            w.WriteString("id", RecordIds.Text(r.Id));
+            w.WriteString("dat", r.PortalDat ? "portal" : "cell");
+            w.WriteString("type", r.Type.ToString());
+            w.WriteEndObject();
+        }
+
+        w.WriteEndArray();
+        Strings(w, "blocks", m.Blocks.Select(b => b.ToString()));
+        Strings(w, "unloadedBlocks", m.UnloadedBlocks.Select(b => b.ToString()));
+        Strings(w, "unloadedCells", m.UnloadedCells.Select(CellIdText.Format));
+        w.WriteStartArray("visibleElsewhere");
+        foreach (var (cell, visible) in m.VisibleElsewhere)
+        {
+            w.WriteStartObject();
+            w.WriteString("cell", CellIdText.Format(cell));
+            Strings(w, "visible", visible.Select(CellIdText.Format));
+            w.WriteEndObject();
+        }
+
+        w.WriteEndArray();
+        if (m.Header is { } h)
+        {
+            w.WriteStartObject("corpus");
+            if (h.Invariant is not null)
+            {
+                w.WriteString("invariant", h.Invariant);
+            }
+
+            w.WriteString("foundBy", h.FoundBy);
+            if (h.Seed is not null)
+            {
+                w.WriteString("seed", h.Seed);
+            }
+
+            Strings(w, "catches", h.Catches);
+            w.WriteEndObject();
+        }
+
+        if (m.Walk is { } walk)
+        {
+            WalkJson.Write(w, walk);
+        }
+
+        w.WriteEndObject();
     }
 
     /// <summary>Parses a manifest.</summary>

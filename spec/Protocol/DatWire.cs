@@ -20,10 +20,7 @@ public static class DatWire
         var export = DatSceneWriter.Write(scene, "wire", "load_scene");
         w.WriteStartObject(name);
         w.WritePropertyName("manifest");
-        using (var manifest = JsonDocument.Parse(DatManifestJson.Write(export.Manifest)))
-        {
-            manifest.RootElement.WriteTo(w); // re-written compact: manifest.json is indented, a request is one line
-        }
+        DatManifestJson.Write(w, export.Manifest); // compact, as the request line's writer is
         w.WriteStartObject("records");
         foreach (var (record, bytes) in export.Records)
         {
