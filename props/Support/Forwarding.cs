@@ -36,6 +36,12 @@ internal abstract class Forwarding(ICellPhysics inner) : ICellPhysics
 
     public FindCellResult FindCell(CellId cell, IReadOnlyList<Sphere> spheres, CellId current) => Inner.FindCell(cell, spheres, current);
 
+    /// <inheritdoc/>
+    public virtual IReadOnlyList<CellId> OutsideCells(CellId cell, System.Numerics.Vector3 origin, IReadOnlyList<Sphere> spheres) => Inner.OutsideCells(cell, origin, spheres);
+
+    /// <inheritdoc/>
+    public virtual FindCellResult FindCell(CellId cell, System.Numerics.Vector3 origin, IReadOnlyList<Sphere> spheres, CellId current) => Inner.FindCell(cell, origin, spheres, current);
+
     public IReadOnlyList<CellId> OutsideCellsParts(IReadOnlyList<Part> parts) => Inner.OutsideCellsParts(parts);
 
     public FindCellResult FindCell(Scene? scene, CellId cell, IReadOnlyList<Sphere> spheres, CellId current) => FindCell(scene, cell, spheres, current, false);

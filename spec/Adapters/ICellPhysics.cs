@@ -112,6 +112,24 @@ public interface ICellPhysics
         loadCells ? throw new NotSupportedException("find_cell_transition") : FindCell(scene, cell, spheres, current);
 
     /// <summary>
+    /// <c>outside_cells</c> with the position's own point (block frame), which retail uses only when
+    /// <paramref name="spheres"/> is empty (facts §3.3 step 3). The default ignores the point: override it.
+    /// </summary>
+    /// <param name="cell">The position's cell id.</param>
+    /// <param name="origin">The position's point in <paramref name="cell"/>'s block frame.</param>
+    /// <param name="spheres">Centres in <paramref name="cell"/>'s block frame.</param>
+    /// <returns>The cells, in insertion order.</returns>
+    IReadOnlyList<CellId> OutsideCells(CellId cell, System.Numerics.Vector3 origin, IReadOnlyList<Sphere> spheres) => OutsideCells(cell, spheres);
+
+    /// <summary><c>find_cell</c> on open land with the position's own point (used only with no spheres, facts §3.3 step 3). The default ignores the point: override it.</summary>
+    /// <param name="cell">The position's cell id.</param>
+    /// <param name="origin">The position's point in <paramref name="cell"/>'s block frame.</param>
+    /// <param name="spheres">Centres in <paramref name="cell"/>'s block frame.</param>
+    /// <param name="current">The current cell, or <see cref="CellId.None"/>.</param>
+    /// <returns>The candidates and the containing cell.</returns>
+    FindCellResult FindCell(CellId cell, System.Numerics.Vector3 origin, IReadOnlyList<Sphere> spheres, CellId current) => FindCell(cell, spheres, current);
+
+    /// <summary>
     /// Gets the documented indoor deviations the implementation declares (facts §7 #6–#13; retail when it says
     /// nothing). The conformance invariants compare it with the reference in the same mode, never failing it for them.
     /// </summary>

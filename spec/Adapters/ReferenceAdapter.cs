@@ -65,16 +65,22 @@ public sealed class ReferenceAdapter(PickPolicy pick = PickPolicy.Retail, PartsF
     }
 
     /// <inheritdoc/>
-    public IReadOnlyList<CellId> OutsideCells(CellId cell, IReadOnlyList<Sphere> spheres)
+    public IReadOnlyList<CellId> OutsideCells(CellId cell, IReadOnlyList<Sphere> spheres) => OutsideCells(cell, System.Numerics.Vector3.Zero, spheres);
+
+    /// <inheritdoc/>
+    public IReadOnlyList<CellId> OutsideCells(CellId cell, System.Numerics.Vector3 origin, IReadOnlyList<Sphere> spheres)
     {
         var array = scratch ??= new CellArray();
         array.Reset();
-        OutdoorCells.AddAllOutsideCells(array, cell, System.Numerics.Vector3.Zero, [.. spheres], OpenLand.Instance, outdoor);
+        OutdoorCells.AddAllOutsideCells(array, cell, origin, [.. spheres], OpenLand.Instance, outdoor);
         return array.ToIdArray();
     }
 
     /// <inheritdoc/>
-    public FindCellResult FindCell(CellId cell, IReadOnlyList<Sphere> spheres, CellId current)
+    public FindCellResult FindCell(CellId cell, IReadOnlyList<Sphere> spheres, CellId current) => FindCell(cell, System.Numerics.Vector3.Zero, spheres, current);
+
+    /// <inheritdoc/>
+    public FindCellResult FindCell(CellId cell, System.Numerics.Vector3 origin, IReadOnlyList<Sphere> spheres, CellId current)
     {
         if (!cell.IsLand)
         {
@@ -85,7 +91,7 @@ public sealed class ReferenceAdapter(PickPolicy pick = PickPolicy.Retail, PartsF
         }
 
         var array = scratch ??= new CellArray();
-        var containing = CellQuery.FindCellListOutdoor(array, cell, [.. spheres], current, pick, OpenLand.Instance, outdoor);
+        var containing = CellQuery.FindCellListOutdoor(array, cell, origin, [.. spheres], current, pick, OpenLand.Instance, outdoor);
         return new FindCellResult(array.ToIdArray(), containing) { Loaded = LoadedFlags(array), HitsInteriorCell = false };
     }
 

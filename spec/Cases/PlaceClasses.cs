@@ -11,6 +11,34 @@ public static class PlaceClasses
     public static IEnumerable<string> OfQuery(OutdoorCase c)
     {
         var tags = new List<string>();
+        if (c.Spheres.Any(s => !float.IsFinite(s.Center.X) || !float.IsFinite(s.Center.Y)))
+        {
+            tags.Add("centre:nonfinite");
+        }
+        else if (c.Spheres.Any(s => float.IsSubnormal(s.Center.X) || float.IsSubnormal(s.Center.Y)))
+        {
+            tags.Add("centre:subnormal");
+        }
+        else if (c.Spheres.Any(s => Math.Abs(s.Center.X) >= 1e6 || Math.Abs(s.Center.Y) >= 1e6))
+        {
+            tags.Add("centre:huge");
+        }
+
+        if (Position(c.Cell) is string position)
+        {
+            tags.Add(position);
+        }
+
+        if (c.Spheres.Count == 0)
+        {
+            tags.Add("query:no-spheres");
+        }
+
+        if (c.Spheres.Any(Touches))
+        {
+            tags.Add("radius:touches-edge");
+        }
+
         if (c.Spheres.Count > 0)
         {
             var s = c.Spheres[0];
@@ -77,6 +105,27 @@ public static class PlaceClasses
         }
 
         return tags;
+    }
+
+    // The kind of position, when not a land cell (facts §1.1, §6.12).
+    private static string? Position(CellId cell) =>
+        cell.IsNone ? "position:id-0"
+        : !LandDefs.CellInRange(cell.Low) ? "position:malformed"
+        : cell.BlockX == 0xFF || cell.BlockY == 0xFF ? "position:block-FF"
+        : cell.Low == 0xFFFF ? "position:block-id"
+        : cell.Low >= LandDefs.FirstEnvCellId ? "position:env"
+        : null;
+
+    // A disc whose radius is exactly the distance from its centre to a line of its cell (facts §6.7).
+    private static bool Touches(Sphere s)
+    {
+        if (s.Radius <= 0 || !float.IsFinite(s.Center.X) || !float.IsFinite(s.Center.Y))
+        {
+            return false;
+        }
+
+        double px = s.Center.X - (24.0 * Math.Floor(s.Center.X / 24.0)), py = s.Center.Y - (24.0 * Math.Floor(s.Center.Y / 24.0));
+        return px == s.Radius || 24 - px == s.Radius || py == s.Radius || 24 - py == s.Radius;
     }
 
     private static void AddPoint(SortedSet<string> tags, double x, double y)

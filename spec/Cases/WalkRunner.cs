@@ -51,8 +51,8 @@ public static class WalkRunner
             // The world point of the position the client holds (float32 drift included): re-framing preserves it.
             double worldX = (192.0 * frame.BlockX) + position.X, worldY = (192.0 * frame.BlockY) + position.Y;
 
-            var query = new OutdoorCase(frame, walk.SpheresAt(position));
-            var answer = impl.FindCell(frame, query.Spheres, current);
+            var query = new OutdoorCase(frame, walk.SpheresAt(position)) { Origin = position };
+            var answer = impl.FindCell(frame, position, query.Spheres, current);
             var before = position;
             if (!answer.Containing.IsNone)
             {

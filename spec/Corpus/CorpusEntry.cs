@@ -61,7 +61,8 @@ public sealed record CorpusEntry
             Invariant = invariant,
             FoundBy = foundBy,
             Seed = seed,
-            Walk = new Walk(q.Cell, System.Numerics.Vector3.Zero, q.Spheres.Select(s => new BodySphere(s.Center, s.Radius)).ToArray(), []),
+            // With no spheres the walk's start is the position's own point, which the query then reads (facts §3.3 step 3).
+            Walk = new Walk(q.Cell, q.Spheres.Count == 0 ? q.Origin : System.Numerics.Vector3.Zero, q.Spheres.Select(s => new BodySphere(s.Center, s.Radius)).ToArray(), []),
         },
         _ => null,
     };

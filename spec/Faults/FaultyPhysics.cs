@@ -28,7 +28,7 @@ internal sealed class FaultyPhysics : ICellPhysics
         lcoord = default;
         if (id.IsNone)
         {
-            return false;
+            return Is(PlantedFaults.BlockIdZeroOk); // ACE: (0, 0) ok (facts §7 #16); lcoord is (0, 0) already
         }
 
         int x = id.BlockX * 8, y = BlockY(id) * 8;
@@ -77,6 +77,18 @@ internal sealed class FaultyPhysics : ICellPhysics
 
         double cx = Is(PlantedFaults.TruncFloor) ? Math.Truncate(x / 24.0) : Math.Floor(x / 24.0);
         double cy = Is(PlantedFaults.TruncFloor) ? Math.Truncate(y / 24.0) : Math.Floor(y / 24.0);
+        if (Is(PlantedFaults.CheckedCast))
+        {
+            int gx = checked(block.X + (int)cx), gy = checked(block.Y + (int)cy); // the defect: NaN, ±∞, huge throw
+            if (!InBounds(gx, gy))
+            {
+                return false;
+            }
+
+            lcoord = new Lcoord(gx, gy);
+            return true;
+        }
+
         if (Is(PlantedFaults.NanAsZero))
         {
             int gx = (int)(block.X + cx), gy = (int)(block.Y + cy); // NaN → 0 on .NET 9+: the defect
@@ -135,17 +147,30 @@ internal sealed class FaultyPhysics : ICellPhysics
     // The parts variant has no planted defect of its own here: it answers as core (ace-same-block-guard is core's ACE option).
     public IReadOnlyList<CellId> OutsideCellsParts(IReadOnlyList<Part> parts) => ReferenceAdapter.Instance.OutsideCellsParts(parts);
 
-    public IReadOnlyList<CellId> OutsideCells(CellId cell, IReadOnlyList<Sphere> spheres)
+    public IReadOnlyList<CellId> OutsideCells(CellId cell, IReadOnlyList<Sphere> spheres) => OutsideCells(cell, System.Numerics.Vector3.Zero, spheres);
+
+    public IReadOnlyList<CellId> OutsideCells(CellId cell, System.Numerics.Vector3 origin, IReadOnlyList<Sphere> spheres)
     {
         var cells = NewArray();
-        AddAllOutsideCells(cells, cell, spheres);
+        AddAllOutsideCells(cells, cell, origin, spheres);
         return cells;
     }
 
-    public FindCellResult FindCell(CellId cell, IReadOnlyList<Sphere> spheres, CellId current)
+    public FindCellResult FindCell(CellId cell, IReadOnlyList<Sphere> spheres, CellId current) => FindCell(cell, System.Numerics.Vector3.Zero, spheres, current);
+
+    public FindCellResult FindCell(CellId cell, System.Numerics.Vector3 origin, IReadOnlyList<Sphere> spheres, CellId current)
     {
+        if (!cell.IsLand)
+        {
+            // An env, block-id or id-0 position is seeded as itself and has no pick on open land (facts §4 step 3);
+            // env-position-contains answers it as its own containing cell with no candidates.
+            return Is(PlantedFaults.EnvPositionContains)
+                ? new FindCellResult([], cell)
+                : new ReferenceAdapter(Pick).FindCell(cell, origin, spheres, current);
+        }
+
         var cells = NewArray();
-        AddAllOutsideCells(cells, cell, spheres);
+        AddAllOutsideCells(cells, cell, origin, spheres);
         var containing = CellId.None;
         if (spheres.Count > 0 && Is(PlantedFaults.StickyPick) && current.IsLand && cells.Contains(current)
             && ContainingCell.LandSquareContains(current, spheres[0].Center - LandDefs.GetBlockOffset(cell, current)))
@@ -165,6 +190,10 @@ internal sealed class FaultyPhysics : ICellPhysics
                 if (id.IsLand && ContainingCell.LandSquareContains(id, spheres[0].Center - LandDefs.GetBlockOffset(cell, id)))
                 {
                     containing = id;
+                    if (Is(PlantedFaults.FirstHitOutdoorPick))
+                    {
+                        break; // the defect: retail's outdoor hits do not stop the scan (facts §4 step 4b)
+                    }
                 }
             }
         }
@@ -180,11 +209,16 @@ internal sealed class FaultyPhysics : ICellPhysics
         return Is(PlantedFaults.NoReset) ? [.. stale] : [];
     }
 
-    private void AddAllOutsideCells(List<CellId> cells, CellId position, IReadOnlyList<Sphere> spheres)
+    private void AddAllOutsideCells(List<CellId> cells, CellId position, System.Numerics.Vector3 origin, IReadOnlyList<Sphere> spheres)
     {
         if (Is(PlantedFaults.SphereGuardInverted) ? spheres.Count != 0 : spheres.Count == 0)
         {
-            var only = AdjustToOutside(position, 0f, 0f);
+            if (Is(PlantedFaults.NoSphereNoCell))
+            {
+                return; // the defect: the sphere loop ran zero times and nothing else was added
+            }
+
+            var only = Is(PlantedFaults.NoSphereOriginIgnored) ? AdjustToOutside(position, 0f, 0f) : AdjustToOutside(position, origin.X, origin.Y);
             if (only.Ok && GidToLcoord(only.Cell, out var lc))
             {
                 AddOutsideCell(cells, position, lc.X, lc.Y);
@@ -227,6 +261,14 @@ internal sealed class FaultyPhysics : ICellPhysics
 
     private void CheckAddCellBoundary(List<CellId> cells, CellId position, CellId cell, float ptX, float ptY, Lcoord lc, float minRad, float maxRad)
     {
+        if (Is(PlantedFaults.TouchInclusive))
+        {
+            // The defect: >= / <= for retail's strict tests (facts §3.2). Moving the limits by one ulp inward makes
+            // every strict test below inclusive for the float32 values it sees.
+            minRad = MathF.BitIncrement(minRad);
+            maxRad = MathF.BitDecrement(maxRad);
+        }
+
         void Add(int dx, int dy)
         {
             if (Is(PlantedFaults.InCellNeighbours))

@@ -40,6 +40,10 @@ internal sealed class IndoorFaultyPhysics(PlantedFault fault) : ICellPhysics
 
     public FindCellResult FindCell(CellId cell, IReadOnlyList<Sphere> spheres, CellId current) => ReferenceAdapter.Instance.FindCell(cell, spheres, current);
 
+    public IReadOnlyList<CellId> OutsideCells(CellId cell, System.Numerics.Vector3 origin, IReadOnlyList<Sphere> spheres) => ReferenceAdapter.Instance.OutsideCells(cell, origin, spheres);
+
+    public FindCellResult FindCell(CellId cell, System.Numerics.Vector3 origin, IReadOnlyList<Sphere> spheres, CellId current) => ReferenceAdapter.Instance.FindCell(cell, origin, spheres, current);
+
     public IReadOnlyList<CellId> OutsideCellsParts(IReadOnlyList<Part> parts) => ReferenceAdapter.Instance.OutsideCellsParts(parts);
 
     public FindCellResult FindCell(Scene? scene, CellId cell, IReadOnlyList<Sphere> spheres, CellId current) => FindCell(scene, cell, spheres, current, false);

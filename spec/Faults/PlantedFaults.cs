@@ -18,7 +18,7 @@ public static class PlantedFaults
         "nan-as-zero",
         "get_outside_lcoord converts to int before the range test, so NaN becomes lcoord 0",
         "issue #2: since .NET 9 (int)float.NaN is 0 on x64 (saturating conversions), so a port that range-tests the int accepts NaN as column 0.",
-        ["NONFINITE-REJECTED", "OUTSIDE-LCOORD-GEOMETRY", "ADJUST-GEOMETRY"]);
+        ["NONFINITE-REJECTED", "NONFINITE-SPHERE-ENDS-LOOP"]);
 
     /// <summary>Map edge off by one.</summary>
     public static readonly PlantedFault MapEdge2040 = new(
@@ -125,11 +125,61 @@ public static class PlantedFaults
         "facts §7 #4: ACE makes every part an anchor and never resets the running range, so a multi-part object spills into cells none of its boxes touch; retail uses the first part only.",
         ["PARTS-SOUNDNESS"]);
 
+    /// <summary>No cell for a query without spheres.</summary>
+    public static readonly PlantedFault NoSphereNoCell = new(
+        "no-sphere-no-cell",
+        "outside_cells / find_cell with an empty sphere list add nothing",
+        "issue #18 (a real port): facts §3.3 step 3 re-seats the position itself and adds its one cell when numSphere is 0; the port's loop over spheres simply ran zero times.",
+        ["OUTSIDE-CELLS-CONFORMANCE", "FIND-CELL-QUERY-CONFORMANCE"]);
+
+    /// <summary>The no-sphere path re-seats (0, 0) instead of the position's own point.</summary>
+    public static readonly PlantedFault NoSphereOriginIgnored = new(
+        "no-sphere-origin-ignored",
+        "with no spheres the position's cell is taken at its block's (0, 0), not at the position's own point",
+        "facts §3.3 step 3: AdjustToOutside runs on the caller's Position; a port that only had the cell id added the block's first cell.",
+        ["OUTSIDE-CELLS-CONFORMANCE", "FIND-CELL-QUERY-CONFORMANCE"]);
+
+    /// <summary>An env, block-id or id-0 position is its own containing cell on open land.</summary>
+    public static readonly PlantedFault EnvPositionContains = new(
+        "env-position-contains",
+        "find_cell from an env-cell, block-id or id-0 position on open land answers no candidates and the position as the containing cell",
+        "issue #18 (a real port): retail seeds an indoor position as itself (facts §4 step 3) and, with no env cell loaded, has no transit and no pick; id 0 has no visible cell at all.",
+        ["FIND-CELL-QUERY-CONFORMANCE"]);
+
+    /// <summary>blockid_to_lcoord(0) succeeds.</summary>
+    public static readonly PlantedFault BlockIdZeroOk = new(
+        "blockid-zero-ok",
+        "blockid_to_lcoord(0) answers (0, 0) ok (ACE)",
+        "facts §2 blockid_to_lcoord, §7 #16: ACE returns (0,0) for id 0; retail reports failure (SceneTool.c @122259).",
+        ["LANDDEFS-CONFORMANCE"]);
+
+    /// <summary>Touching counts as overlapping in check_add_cell_boundary.</summary>
+    public static readonly PlantedFault TouchInclusive = new(
+        "touch-inclusive",
+        "check_add_cell_boundary uses >= / <= where retail is strict",
+        "facts §3.2, §6.7: every comparison is strict, so a disc that exactly touches a cell line (pt.x == r) adds no neighbour; an inclusive test adds one.",
+        ["OUTSIDE-CELLS-CONFORMANCE", "FIND-CELL-QUERY-CONFORMANCE"]);
+
+    /// <summary>The first outdoor cell containing the centre wins.</summary>
+    public static readonly PlantedFault FirstHitOutdoorPick = new(
+        "first-hit-outdoor-pick",
+        "the outdoor pick keeps the first candidate whose square contains the centre (retail: the last)",
+        "facts §4 step 4b, §6.5: outdoor hits do not stop the scan, so on an exact line the last candidate containing the centre wins; a port that breaks on the first hit picks the other cell.",
+        ["FIND-CELL-QUERY-CONFORMANCE"]);
+
+    /// <summary>Checked conversion: a non-finite or huge coordinate throws.</summary>
+    public static readonly PlantedFault CheckedCast = new(
+        "checked-cast",
+        "get_outside_lcoord converts ⌊x/24⌋ with a checked cast, so NaN, ±∞ and huge coordinates throw OverflowException",
+        "facts §6.15, §6.17: a port that guards the .NET 9 saturating cast with `checked` trades silent garbage for an exception on every non-finite or |x| > 5·10¹⁰ centre; every operation must answer every input.",
+        ["NONFINITE-REJECTED", "NONFINITE-SPHERE-ENDS-LOOP"]);
+
     /// <summary>Gets every planted fault.</summary>
     public static IReadOnlyList<PlantedFault> All { get; } =
     [
         TruncFloor, NanAsZero, MapEdge2040, SignExtendBlockY, DropBlockLength, NoEpsSnap, InboundXOnly,
         Clamp106, InCellNeighbours, ElseDiagonal, SphereGuardInverted, SphereLeak, NoReset, NoHysteresis, StickyPick, AceSameBlockGuard, AceEveryPartAnchors,
+        NoSphereNoCell, NoSphereOriginIgnored, EnvPositionContains, BlockIdZeroOk, TouchInclusive, FirstHitOutdoorPick, CheckedCast,
         .. IndoorFaults.All,
     ];
 

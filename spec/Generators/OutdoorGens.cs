@@ -39,14 +39,53 @@ public static class OutdoorGens
                 ? new CellId((byte)t.Item1.Item1, (byte)t.Item1.Item2, (ushort)t.Item2.Item1)
                 : new CellId((byte)t.Item1.Item2, (byte)t.Item1.Item1, (ushort)t.Item2.Item1))));
 
-    /// <summary>Gets spheres (z small, irrelevant to outdoor membership).</summary>
-    public static Gen<Sphere> Spheres { get; } =
-        Gen.Zip(Gen.Zip(Coordinates, Coordinates), Radii).Select(t => new Sphere(new Vector3(t.Item1.Item1, t.Item1.Item2, 0.5f), t.Item2));
+    /// <summary>
+    /// Gets the positions a query may come from (facts §6.12, §4 step 3): land cells (most), an env cell or the block id
+    /// 0xFFFF of an on-map block (both reach the land under them), id 0, a malformed low word, a 0xFF block byte.
+    /// </summary>
+    public static Gen<CellId> Positions { get; } = Gen.Frequency(
+        (26, Cells),
+        (2, Gen.Zip(Cells, Gen.Choose(0x100, 0xFFFD)).Select(t => new CellId(t.Item1.BlockX, t.Item1.BlockY, (ushort)t.Item2))),
+        (2, Cells.Select(c => new CellId(c.BlockX, c.BlockY, 0xFFFF))),
+        (1, Gen.Constant(CellId.None)),
+        (1, Gen.Zip(Cells, Gen.Elements(0, 65, 0xFF, 0xFFFE)).Select(t => new CellId(t.Item1.BlockX, t.Item1.BlockY, (ushort)t.Item2))),
+        (1, Gen.Zip(Cells, Gen.Elements(true, false)).Select(t => t.Item2 ? new CellId(0xFF, t.Item1.BlockY, t.Item1.Low) : new CellId(t.Item1.BlockX, 0xFF, t.Item1.Low))));
 
-    /// <summary>Gets outdoor queries with 1–3 spheres (multi-sphere bodies).</summary>
+    /// <summary>
+    /// Gets the coordinates only the LandDefs invariants used to see (facts §6.12, §6.17): NaN, ±∞, subnormals and
+    /// huge values (|v| ≤ 10¹⁵, so ⌊v/24⌋ stays far inside the 64-bit range retail converts through).
+    /// </summary>
+    public static Gen<float> ExtremeCoordinates { get; } = Gen.Elements(
+        float.NaN, float.PositiveInfinity, float.NegativeInfinity, float.Epsilon, -float.Epsilon, 1e-40f, -1e-40f, 1e6f, -1e6f, 3.4e9f, -7.2e12f, 1e15f, -1e15f);
+
+    /// <summary>Gets spheres (z small, irrelevant to outdoor membership).</summary>
+    public static Gen<Sphere> Spheres { get; } = Gen.Frequency(
+        (20, Gen.Zip(Gen.Zip(Coordinates, Coordinates), Radii).Select(t => new Sphere(new Vector3(t.Item1.Item1, t.Item1.Item2, 0.5f), t.Item2))),
+        (3, Gen.Zip(Gen.Zip(Coordinates, Coordinates), Gen.Choose(0, 3)).Select(t => Touching(t.Item1.Item1, t.Item1.Item2, t.Item2))),
+        (2, Gen.Zip(Gen.Zip(ExtremeCoordinates, Coordinates), Gen.Zip(Radii, Gen.Choose(0, 2))).Select(t => Extreme(t.Item1.Item1, t.Item1.Item2, t.Item2.Item1, t.Item2.Item2))));
+
+    /// <summary>Gets outdoor queries: no spheres (the position's own point is used, facts §3.3 step 3), or 1–3 spheres (multi-sphere bodies).</summary>
     public static Gen<OutdoorCase> Cases { get; } =
-        Gen.Zip(Cells, Gen.Frequency((6, Gen.Constant(1)), (3, Gen.Constant(2)), (1, Gen.Constant(3))))
-            .SelectMany(t => Gen.ArrayOf(Spheres, t.Item2).Select(s => new OutdoorCase(t.Item1, s)));
+        Gen.Zip(Gen.Zip(Positions, Gen.Zip(Coordinates, Coordinates)), Gen.Frequency((2, Gen.Constant(0)), (18, Gen.Constant(1)), (9, Gen.Constant(2)), (3, Gen.Constant(3))))
+            .SelectMany(t => Gen.ArrayOf(Spheres, t.Item2).Select(s => new OutdoorCase(t.Item1.Item1, s) { Origin = s.Length == 0 ? new Vector3(t.Item1.Item2.Item1, t.Item1.Item2.Item2, 0.5f) : Vector3.Zero }));
+
+    // A disc that exactly touches one edge of its cell (facts §3.2, §6.7: the tests are strict, so it adds nothing
+    // there): r is the exact distance from the centre to the west (0), east (1), south (2) or north (3) line. Both are
+    // multiples of 2⁻¹⁰ below 2¹³, so the float32 difference is exact.
+    private static Sphere Touching(float x, float y, int edge)
+    {
+        float v = edge < 2 ? x : y;
+        float inCell = v - (24f * MathF.Floor(v / 24f));
+        float r = edge % 2 == 0 ? inCell : 24f - inCell;
+        return new Sphere(new Vector3(x, y, 0.5f), r == 0 ? 24f : r);
+    }
+
+    private static Sphere Extreme(float extreme, float other, float r, int axis) => axis switch
+    {
+        0 => new Sphere(new Vector3(extreme, other, 0.5f), r),
+        1 => new Sphere(new Vector3(other, extreme, 0.5f), r),
+        _ => new Sphere(new Vector3(extreme, extreme, 0.5f), r),
+    };
 
     /// <summary>Gets the arbitrary for outdoor queries.</summary>
     public static Arbitrary<OutdoorCase> Arbitrary { get; } = Arb.From(Cases, OutdoorShrinker.Shrink);

@@ -17,6 +17,19 @@ public static class OutdoorShrinker
             yield return c with { Spheres = [.. c.Spheres.Take(i), .. c.Spheres.Skip(i + 1)] };
         }
 
+        if (c.Spheres.Count == 0)
+        {
+            foreach (var x in Snap.Simpler(c.Origin.X))
+            {
+                yield return c with { Origin = c.Origin with { X = x } };
+            }
+
+            foreach (var y in Snap.Simpler(c.Origin.Y))
+            {
+                yield return c with { Origin = c.Origin with { Y = y } };
+            }
+        }
+
         for (int i = 0; i < c.Spheres.Count; i++)
         {
             var s = c.Spheres[i];

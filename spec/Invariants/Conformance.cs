@@ -63,6 +63,22 @@ public static class Conformance
     public static bool ExcusedOnOpenLand<T>(T got, T want, T alternate, Func<Sphere[], T> probe, Func<T, T, bool> same, IReadOnlyList<Sphere> spheres) =>
         same(got, alternate) || (!same(want, alternate) && Probes(spheres).Any(p => same(got, probe(p))));
 
+    /// <summary>Tests whether a sphere centre has a non-finite x or y: such queries are judged only by hardening rules (facts §6.17).</summary>
+    /// <param name="spheres">The spheres.</param>
+    /// <returns>True when some centre is NaN or infinite in x or y.</returns>
+    public static bool HasNonFiniteCentre(IReadOnlyList<Sphere> spheres)
+    {
+        foreach (var s in spheres)
+        {
+            if (!float.IsFinite(s.Center.X) || !float.IsFinite(s.Center.Y))
+            {
+                return true;
+            }
+        }
+
+        return false;
+    }
+
     /// <summary>Returns the step of one ulp-probe: <see cref="TieUlps"/> ulps of the largest magnitude among the values (at least that of 1 m).</summary>
     /// <param name="values">Coordinates.</param>
     /// <returns>The step, metres.</returns>

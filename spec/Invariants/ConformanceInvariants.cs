@@ -31,10 +31,15 @@ public static class ConformanceInvariants
         (impl, q) =>
         {
             var reference = Conformance.ReferenceFor(impl);
-            var got = impl.OutsideCells(q.Cell, q.Spheres);
-            var want = reference.OutsideCells(q.Cell, q.Spheres);
+            var got = impl.OutsideCells(q.Cell, q.Origin, q.Spheres);
+            if (Conformance.HasNonFiniteCentre(q.Spheres))
+            {
+                return Outcome.Vacuous; // asked (a throw is a violation), not judged: NONFINITE-SPHERE-ENDS-LOOP, a hardening rule, does (facts §6.17)
+            }
+
+            var want = reference.OutsideCells(q.Cell, q.Origin, q.Spheres);
             if (got.SequenceEqual(want)
-                || Conformance.ExcusedOnOpenLand(got, want, Conformance.AlternateFor(impl).OutsideCells(q.Cell, q.Spheres), p => reference.OutsideCells(q.Cell, p), (a, b) => a.SequenceEqual(b), q.Spheres))
+                || Conformance.ExcusedOnOpenLand(got, want, Conformance.AlternateFor(impl).OutsideCells(q.Cell, q.Origin, q.Spheres), p => reference.OutsideCells(q.Cell, q.Origin, p), (a, b) => a.SequenceEqual(b), q.Spheres))
             {
                 return Outcome.Holds;
             }
@@ -42,6 +47,15 @@ public static class ConformanceInvariants
             int k = got.Zip(want).TakeWhile(x => x.First == x.Second).Count();
             return Outcome.Violated($"cells differ at position {k}: got [{string.Join(", ", got)}], reference [{string.Join(", ", want)}]");
         });
+
+    /// <summary>FIND-CELL-QUERY-CONFORMANCE: one open-land find_cell query from any kind of position, answered exactly as the reference.</summary>
+    public static readonly Invariant<OutdoorCase> FindCellQuery = new(
+        "FIND-CELL-QUERY-CONFORMANCE",
+        "find_cell answers every generated open-land query (from a land, env, block-id, id-0 or malformed position, with or without spheres; with no current cell and with each of its first three candidates as the current cell) with exactly the reference core's candidates in insertion order and containing cell: strict neighbour tests and the last-wins pick on exact lines are pinned (an answer of the exact double arithmetic, or a rounding-decided tie within 8 ulps, excused).",
+        "facts §3.2, §3.3, §4 steps 2–4, §6.5, §6.7, §6.12",
+        Op.FindCell,
+        OutdoorDomain.Instance,
+        FindCellQueryCheck);
 
     /// <summary>LANDDEFS-CONFORMANCE.</summary>
     public static readonly Invariant<LandCase> LandDefs = new(
@@ -53,7 +67,32 @@ public static class ConformanceInvariants
         LandDefsCheck);
 
     /// <summary>Gets every conformance invariant.</summary>
-    public static IReadOnlyList<Invariant> All { get; } = [LandDefs, OutsideCells, FindCell];
+    public static IReadOnlyList<Invariant> All { get; } = [LandDefs, OutsideCells, FindCellQuery, FindCell];
+
+    private static Outcome FindCellQueryCheck(ICellPhysics impl, OutdoorCase q)
+    {
+        var first = impl.FindCell(q.Cell, q.Origin, q.Spheres, CellId.None);
+        if (Conformance.HasNonFiniteCentre(q.Spheres))
+        {
+            return Outcome.Vacuous; // asked, not judged (facts §6.17: what retail does is a hardening question)
+        }
+
+        var reference = Conformance.ReferenceFor(impl);
+        var alternate = Conformance.AlternateFor(impl);
+        bool superset = impl.Indoor.AceKeepsStaleCells;
+        foreach (var current in first.Cells.Take(3).Prepend(CellId.None))
+        {
+            var got = current.IsNone ? first : impl.FindCell(q.Cell, q.Origin, q.Spheres, current);
+            var want = reference.FindCell(q.Cell, q.Origin, q.Spheres, current);
+            if (Conformance.Difference(got, want, superset) is string why
+                && !Conformance.ExcusedOnOpenLand(got, want, alternate.FindCell(q.Cell, q.Origin, q.Spheres, current), p => reference.FindCell(q.Cell, q.Origin, p, current), (a, b) => Conformance.Difference(a, b, superset) is null, q.Spheres))
+            {
+                return Outcome.Violated($"find_cell from {q.Cell}{(q.Spheres.Count == 0 ? $" (no spheres, origin {OutdoorCase.Format(new Sphere(q.Origin, 0))})" : string.Empty)}, current {(current.IsNone ? "none" : current.ToString())}: {why}");
+            }
+        }
+
+        return Outcome.Holds;
+    }
 
     private static Outcome OutdoorWalk(ICellPhysics impl, Walk walk)
     {
@@ -66,9 +105,9 @@ public static class ConformanceInvariants
             var s = trace[i];
             var current = i == 0 ? CellId.None : trace[i - 1].Current;
             var got = s.Answer!;
-            var want = reference.FindCell(s.Query.Cell, s.Query.Spheres, current);
+            var want = reference.FindCell(s.Query.Cell, s.Query.Origin, s.Query.Spheres, current);
             if (Conformance.Difference(got, want, superset) is string why
-                && !Conformance.ExcusedOnOpenLand(got, want, alternate.FindCell(s.Query.Cell, s.Query.Spheres, current), p => reference.FindCell(s.Query.Cell, p, current), (a, b) => Conformance.Difference(a, b, superset) is null, s.Query.Spheres))
+                && !Conformance.ExcusedOnOpenLand(got, want, alternate.FindCell(s.Query.Cell, s.Query.Origin, s.Query.Spheres, current), p => reference.FindCell(s.Query.Cell, s.Query.Origin, p, current), (a, b) => Conformance.Difference(a, b, superset) is null, s.Query.Spheres))
             {
                 return Outcome.Violated($"step {s.Index} (find_cell from {s.Query.Cell}, spheres [{string.Join("; ", s.Query.Spheres.Select(OutdoorCase.Format))}], current {current}): {why}");
             }
@@ -134,6 +173,12 @@ public static class ConformanceInvariants
 
         var probes = LandProbes(c).ToArray();
         bool gotOk = impl.GetOutsideLcoord(c.Cell, c.X, c.Y, out var lc);
+        if (!float.IsFinite(c.X) || !float.IsFinite(c.Y))
+        {
+            impl.AdjustToOutside(c.Cell, c.X, c.Y);
+            return Outcome.Holds; // asked, not judged: retail's answer is a hardening question (facts §6.17, NONFINITE-REJECTED)
+        }
+
         if (Lcoords(gotOk, lc, reference.GetOutsideLcoord(c.Cell, c.X, c.Y, out var want), want) is string m3
             && probes.All(p => Lcoords(gotOk, lc, reference.GetOutsideLcoord(c.Cell, p.X, p.Y, out var pw), pw) is not null))
         {

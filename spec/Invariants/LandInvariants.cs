@@ -99,7 +99,7 @@ public static class LandInvariants
         "facts §2 get_outside_lcoord, §6.2",
         Op.GetOutsideLcoord,
         LandDomain.Instance,
-        (impl, c) =>
+        FiniteOnly((impl, c) =>
         {
             var expected = Oracle.Column(c.Cell, c.X, c.Y);
             bool ok = impl.GetOutsideLcoord(c.Cell, c.X, c.Y, out var lc);
@@ -109,7 +109,7 @@ public static class LandInvariants
             }
 
             return Outcome.Holds;
-        });
+        }));
 
     /// <summary>ADJUST-GEOMETRY.</summary>
     public static readonly Invariant<LandCase> AdjustGeometry = new(
@@ -118,7 +118,7 @@ public static class LandInvariants
         "facts §2.1, §6.3, §6.4",
         Op.AdjustToOutside,
         LandDomain.Instance,
-        (impl, c) =>
+        FiniteOnly((impl, c) =>
         {
             var r = impl.AdjustToOutside(c.Cell, c.X, c.Y);
             if (!Oracle.LowInRange(c.Cell.Low))
@@ -141,7 +141,7 @@ public static class LandInvariants
             return r.Ok && r.Cell == expected
                 ? Outcome.Holds
                 : Outcome.Violated($"adjust_to_outside = {Show(r)}, expected {expected} (snapped point {FloatText.Format(sx)}, {FloatText.Format(sy)})");
-        });
+        }));
 
     /// <summary>ADJUST-IDEMPOTENT.</summary>
     public static readonly Invariant<LandCase> AdjustIdempotent = new(
@@ -150,7 +150,7 @@ public static class LandInvariants
         "facts §2.1, §6.5 (tie band: docs/numerics.md)",
         Op.AdjustToOutside,
         LandDomain.Instance,
-        (impl, c) =>
+        FiniteOnly((impl, c) =>
         {
             var r1 = impl.AdjustToOutside(c.Cell, c.X, c.Y);
             if (!r1.Ok)
@@ -182,7 +182,7 @@ public static class LandInvariants
             return SameBits(r3, r2)
                 ? Outcome.Holds
                 : Outcome.Violated($"third re-seat of {Show(r2)} gave {Show(r3)}");
-        });
+        }));
 
     /// <summary>ADJUST-PRESERVES-POSITION.</summary>
     public static readonly Invariant<LandCase> AdjustPreservesPosition = new(
@@ -191,7 +191,7 @@ public static class LandInvariants
         "facts §2.1 step 4",
         Op.AdjustToOutside,
         LandDomain.Instance,
-        (impl, c) =>
+        FiniteOnly((impl, c) =>
         {
             var r = impl.AdjustToOutside(c.Cell, c.X, c.Y);
             if (!r.Ok)
@@ -205,7 +205,7 @@ public static class LandInvariants
             return Math.Abs(dx) <= PositionTolerance && Math.Abs(dy) <= PositionTolerance
                 ? Outcome.Holds
                 : Outcome.Violated($"world point moved by ({dx:R}, {dy:R}) m: {Show(r)}");
-        });
+        }));
 
     /// <summary>ADJUST-RANGE.</summary>
     public static readonly Invariant<LandCase> AdjustRange = new(
@@ -214,7 +214,7 @@ public static class LandInvariants
         "facts §2.1 consequences, §5.5 (closed squares)",
         Op.AdjustToOutside,
         LandDomain.Instance,
-        (impl, c) =>
+        FiniteOnly((impl, c) =>
         {
             var r = impl.AdjustToOutside(c.Cell, c.X, c.Y);
             if (!r.Ok)
@@ -237,7 +237,7 @@ public static class LandInvariants
             return r.X >= west && r.X <= west + 24 && r.Y >= south && r.Y <= south + 24
                 ? Outcome.Holds
                 : Outcome.Violated($"re-based point ({FloatText.Format(r.X)}, {FloatText.Format(r.Y)}) is not in the closed square of {r.Cell}");
-        });
+        }));
 
     /// <summary>MAP-EDGE.</summary>
     public static readonly Invariant<LandCase> MapEdge = new(
@@ -301,6 +301,29 @@ public static class LandInvariants
 
             return applied ? Outcome.Holds : Outcome.Vacuous;
         });
+
+    // Retail has no finiteness test and most likely re-seats a non-finite coordinate in its block's own column (facts
+    // §6.17), so the geometry invariants state retail only for finite points: a non-finite point is still asked (an
+    // exception is a violation) but judged only by NONFINITE-REJECTED, a hardening rule.
+    private static Func<ICellPhysics, LandCase, Outcome> FiniteOnly(Func<ICellPhysics, LandCase, Outcome> check) => (impl, c) =>
+    {
+        if (float.IsFinite(c.X) && float.IsFinite(c.Y))
+        {
+            return check(impl, c);
+        }
+
+        if ((impl.Ops & Op.GetOutsideLcoord) != 0)
+        {
+            impl.GetOutsideLcoord(c.Cell, c.X, c.Y, out _);
+        }
+
+        if ((impl.Ops & Op.AdjustToOutside) != 0)
+        {
+            impl.AdjustToOutside(c.Cell, c.X, c.Y);
+        }
+
+        return Outcome.Vacuous;
+    };
 
     /// <summary>NONFINITE-REJECTED.</summary>
     public static readonly Invariant<LandCase> NonFiniteRejected = new(

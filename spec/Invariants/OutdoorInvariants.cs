@@ -20,7 +20,12 @@ public static class OutdoorInvariants
         OutdoorDomain.Instance,
         (impl, c) =>
         {
-            var set = impl.OutsideCells(c.Cell, c.Spheres).ToHashSet();
+            var set = impl.OutsideCells(c.Cell, c.Origin, c.Spheres).ToHashSet();
+            if (!PositionValid(c.Cell))
+            {
+                return Outcome.Vacuous; // retail's AdjustToOutside fails on the position's id itself: no sphere adds a cell
+            }
+
             bool applied = false;
             foreach (var s in c.Spheres)
             {
@@ -64,7 +69,7 @@ public static class OutdoorInvariants
         OutdoorDomain.Instance,
         (impl, c) =>
         {
-            var cells = impl.OutsideCells(c.Cell, c.Spheres);
+            var cells = impl.OutsideCells(c.Cell, c.Origin, c.Spheres);
             if (cells.Distinct().Count() != cells.Count)
             {
                 return Outcome.Violated($"duplicate ids in [{string.Join(", ", cells)}]");
@@ -77,7 +82,14 @@ public static class OutdoorInvariants
                     return Outcome.Violated($"{id} is not a land cell on the map");
                 }
 
-                bool near = c.Spheres.Any(s =>
+                // With no spheres the position's own point stands in (facts §3.3 step 3). A cell from a non-finite centre
+                // is judged by NONFINITE-SPHERE-ENDS-LOOP, a hardening rule (retail would add its block's column, §6.17).
+                if (Conformance.HasNonFiniteCentre(c.Spheres))
+                {
+                    continue;
+                }
+
+                bool near = (c.Spheres.Count == 0 ? [new Sphere(c.Origin, 0)] : c.Spheres).Any(s =>
                 {
                     var (gapX, gapY) = Gap(c.Cell, id, s.Center);
                     return Math.Max(gapX, gapY) <= s.Radius + Tolerance;
@@ -100,7 +112,12 @@ public static class OutdoorInvariants
         OutdoorDomain.Instance,
         (impl, c) =>
         {
-            var baseline = impl.OutsideCells(c.Cell, c.Spheres).ToHashSet();
+            var baseline = impl.OutsideCells(c.Cell, c.Origin, c.Spheres).ToHashSet();
+            if (c.Spheres.Count == 0 || !PositionValid(c.Cell))
+            {
+                return Outcome.Vacuous; // only spheres are re-expressed; an invalid id has no frame to re-express
+            }
+
             bool applied = false;
             for (int dbx = -1; dbx <= 1; dbx++)
             {
@@ -138,7 +155,12 @@ public static class OutdoorInvariants
         OutdoorDomain.Instance,
         (impl, c) =>
         {
-            var baseline = impl.OutsideCells(c.Cell, c.Spheres);
+            var baseline = impl.OutsideCells(c.Cell, c.Origin, c.Spheres);
+            if (c.Spheres.Count == 0 || !PositionValid(c.Cell))
+            {
+                return Outcome.Vacuous;
+            }
+
             bool applied = false;
             foreach (var (kx, ky) in new[] { (1, 0), (0, -1), (-3, 2), (8, 0), (-8, 8), (17, -9) })
             {
@@ -173,9 +195,9 @@ public static class OutdoorInvariants
                 return Outcome.Vacuous;
             }
 
-            var baseline = impl.OutsideCells(c.Cell, c.Spheres).ToHashSet();
-            var reversed = impl.OutsideCells(c.Cell, c.Spheres.Reverse().ToArray()).ToHashSet();
-            var rotated = impl.OutsideCells(c.Cell, [.. c.Spheres.Skip(1), c.Spheres[0]]).ToHashSet();
+            var baseline = impl.OutsideCells(c.Cell, c.Origin, c.Spheres).ToHashSet();
+            var reversed = impl.OutsideCells(c.Cell, c.Origin, c.Spheres.Reverse().ToArray()).ToHashSet();
+            var rotated = impl.OutsideCells(c.Cell, c.Origin, [.. c.Spheres.Skip(1), c.Spheres[0]]).ToHashSet();
             return reversed.SetEquals(baseline) && rotated.SetEquals(baseline)
                 ? Outcome.Holds
                 : Outcome.Violated($"[{string.Join(", ", baseline.Order())}] vs reversed [{string.Join(", ", reversed.Order())}] vs rotated [{string.Join(", ", rotated.Order())}]");
@@ -195,10 +217,10 @@ public static class OutdoorInvariants
                 return Outcome.Vacuous;
             }
 
-            var first = impl.FindCell(c.Cell, c.Spheres, CellId.None);
+            var first = impl.FindCell(c.Cell, c.Origin, c.Spheres, CellId.None);
             foreach (var current in first.Cells.Take(4))
             {
-                var again = impl.FindCell(c.Cell, c.Spheres, current);
+                var again = impl.FindCell(c.Cell, c.Origin, c.Spheres, current);
                 if (again.Containing != first.Containing)
                 {
                     return Outcome.Violated($"pick {again.Containing} with current {current}, {first.Containing} with none");
@@ -228,12 +250,12 @@ public static class OutdoorInvariants
                 return Outcome.Vacuous;
             }
 
-            var first = impl.FindCell(c.Cell, c.Spheres, CellId.None);
+            var first = impl.FindCell(c.Cell, c.Origin, c.Spheres, CellId.None);
             bool applied = false;
             foreach (var current in first.Cells.Where(id => id.IsLand && SquareContains(c.Cell, id, c.Spheres[0].Center)))
             {
                 applied = true;
-                var again = impl.FindCell(c.Cell, c.Spheres, current);
+                var again = impl.FindCell(c.Cell, c.Origin, c.Spheres, current);
                 if (again.Containing != current)
                 {
                     return Outcome.Violated($"current {current} still contains the centre but the pick moved to {again.Containing}");
@@ -244,8 +266,40 @@ public static class OutdoorInvariants
         },
         PickPolicy.CurrentFirst);
 
+    /// <summary>NONFINITE-SPHERE-ENDS-LOOP.</summary>
+    public static readonly Invariant<OutdoorCase> NonFiniteSphereEndsLoop = new(
+        "NONFINITE-SPHERE-ENDS-LOOP",
+        "A sphere whose centre has a NaN or infinite x or y adds no cell and ends the sphere loop, as an off-map centre does: outside_cells answers exactly what it answers for the spheres before it, without an exception (a hardening rule: retail most likely re-seats it in its block's own column, facts §6.17).",
+        "facts §3.3 b, §6.17 (hardening)",
+        Op.OutsideCells,
+        OutdoorDomain.Instance,
+        (impl, c) =>
+        {
+            int k = -1;
+            for (int i = 0; i < c.Spheres.Count && k < 0; i++)
+            {
+                k = float.IsFinite(c.Spheres[i].Center.X) && float.IsFinite(c.Spheres[i].Center.Y) ? -1 : i;
+            }
+
+            if (k < 0)
+            {
+                return Outcome.Vacuous;
+            }
+
+            var got = impl.OutsideCells(c.Cell, c.Origin, c.Spheres);
+            var before = k == 0 ? [] : impl.OutsideCells(c.Cell, c.Origin, c.Spheres.Take(k).ToArray());
+            return got.SequenceEqual(before)
+                ? Outcome.Holds
+                : Outcome.Violated($"sphere {k} ({OutdoorCase.Format(c.Spheres[k])}) is not finite, yet the cells are [{string.Join(", ", got)}] where the {k} sphere(s) before it give [{string.Join(", ", before)}]");
+        });
+
     /// <summary>Gets every outdoor-query invariant.</summary>
-    public static IReadOnlyList<Invariant<OutdoorCase>> All { get; } = [Coverage, Soundness, NeighbourSymmetry, Translation, SphereOrder, StablePick, Hysteresis];
+    public static IReadOnlyList<Invariant<OutdoorCase>> All { get; } = [Coverage, Soundness, NeighbourSymmetry, Translation, SphereOrder, StablePick, Hysteresis, NonFiniteSphereEndsLoop];
+
+    /// <summary>Tests whether AdjustToOutside accepts the position's id at all: a valid low word and an on-map block (facts §2.1 step 1, §2 get_outside_lcoord).</summary>
+    /// <param name="cell">The position's id.</param>
+    /// <returns>True when a sphere can add cells.</returns>
+    public static bool PositionValid(CellId cell) => Oracle.LowInRange(cell.Low) && Oracle.BlockOnMap(cell);
 
     /// <summary>Returns a block-frame point in world metres (double; exact for the magnitudes generated).</summary>
     /// <param name="frame">The cell whose block frame the point is in.</param>

@@ -170,18 +170,29 @@ public sealed class ProcessAdapter : ICellPhysics, IDisposable
         a => new AdjustResult(Wire.ReadBool(a, "ok"), Wire.ReadCell(a, "cell"), Wire.ReadFloat(a, "x"), Wire.ReadFloat(a, "y")));
 
     /// <inheritdoc/>
-    public IReadOnlyList<CellId> OutsideCells(CellId cell, IReadOnlyList<Sphere> spheres) => Call(
+    public IReadOnlyList<CellId> OutsideCells(CellId cell, IReadOnlyList<Sphere> spheres) => OutsideCells(cell, System.Numerics.Vector3.Zero, spheres);
+
+    /// <inheritdoc/>
+    public IReadOnlyList<CellId> OutsideCells(CellId cell, System.Numerics.Vector3 origin, IReadOnlyList<Sphere> spheres) => Call(
         Op.OutsideCells,
         w =>
         {
             Wire.WriteCell(w, "cell", cell);
             Wire.WriteSpheres(w, "spheres", spheres);
+            Wire.WriteOrigin(w, origin, spheres);
         },
         a => Wire.ReadCells(a, "cells"));
 
     /// <inheritdoc/>
-    public FindCellResult FindCell(CellId cell, IReadOnlyList<Sphere> spheres, CellId current) =>
-        Call(Op.FindCell, w => FindCellFields(w, null, cell, spheres, current), ReadFindCell);
+    public FindCellResult FindCell(CellId cell, IReadOnlyList<Sphere> spheres, CellId current) => FindCell(cell, System.Numerics.Vector3.Zero, spheres, current);
+
+    /// <inheritdoc/>
+    public FindCellResult FindCell(CellId cell, System.Numerics.Vector3 origin, IReadOnlyList<Sphere> spheres, CellId current) =>
+        Call(Op.FindCell, w =>
+        {
+            FindCellFields(w, null, cell, spheres, current);
+            Wire.WriteOrigin(w, origin, spheres);
+        }, ReadFindCell);
 
     /// <summary>
     /// <c>find_cell</c> with a scene: the scene travels as its compact JSON (docs/protocol.md, "Scenes") and is

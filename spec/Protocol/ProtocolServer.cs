@@ -160,7 +160,7 @@ public sealed class ProtocolServer(ICellPhysics impl)
 
             case Op.OutsideCells:
                 {
-                    var cells = impl.OutsideCells(Wire.ReadCell(request, "cell"), Wire.ReadSpheres(request, "spheres"));
+                    var cells = impl.OutsideCells(Wire.ReadCell(request, "cell"), Wire.ReadOrigin(request), Wire.ReadSpheres(request, "spheres"));
                     return Wire.Line(w => Wire.WriteCells(w, "cells", cells));
                 }
 
@@ -199,7 +199,9 @@ public sealed class ProtocolServer(ICellPhysics impl)
                         return Error($"transition queries (load_cells) not served by {impl.Name} (it does not offer find_cell_transition)");
                     }
 
-                    var r = impl.FindCell(scene, Wire.ReadCell(request, "cell"), Wire.ReadSpheres(request, "spheres"), Wire.ReadOptionalCell(request, "current"), loadCells);
+                    var r = scene is null && !loadCells
+                        ? impl.FindCell(Wire.ReadCell(request, "cell"), Wire.ReadOrigin(request), Wire.ReadSpheres(request, "spheres"), Wire.ReadOptionalCell(request, "current"))
+                        : impl.FindCell(scene, Wire.ReadCell(request, "cell"), Wire.ReadSpheres(request, "spheres"), Wire.ReadOptionalCell(request, "current"), loadCells);
                     return Wire.Line(w => Wire.WriteFindCell(w, r));
                 }
 

@@ -179,6 +179,46 @@ public static class Wire
         return new Adapters.FindCellResult(cells, ReadOptionalCell(a, "containing")) { Loaded = loaded, HitsInteriorCell = hits };
     }
 
+    /// <summary>
+    /// Writes the position's own point as <c>"origin": {x,y,z}</c> when the sphere list is empty and the point is not
+    /// (0, 0, 0): the only case retail reads it (facts §3.3 step 3). Absent means (0, 0, 0), so protocol v1 requests
+    /// without it keep their meaning.
+    /// </summary>
+    /// <param name="w">The writer.</param>
+    /// <param name="origin">The position's point in its cell's block frame.</param>
+    /// <param name="spheres">The spheres of the same request.</param>
+    public static void WriteOrigin(Utf8JsonWriter w, System.Numerics.Vector3 origin, IReadOnlyList<Sphere> spheres)
+    {
+        if (spheres.Count != 0 || origin == System.Numerics.Vector3.Zero)
+        {
+            return;
+        }
+
+        w.WriteStartObject("origin");
+        WriteFloat(w, "x", origin.X);
+        WriteFloat(w, "y", origin.Y);
+        WriteFloat(w, "z", origin.Z);
+        w.WriteEndObject();
+    }
+
+    /// <summary>Reads the optional <c>"origin": {x,y,z}</c> of a request ((0, 0, 0) when absent or null).</summary>
+    /// <param name="request">The request object.</param>
+    /// <returns>The point.</returns>
+    public static System.Numerics.Vector3 ReadOrigin(JsonElement request)
+    {
+        if (!request.TryGetProperty("origin", out var o) || o.ValueKind == JsonValueKind.Null)
+        {
+            return System.Numerics.Vector3.Zero;
+        }
+
+        if (o.ValueKind != JsonValueKind.Object)
+        {
+            throw new WireException("field \"origin\" must be an object {x, y, z}");
+        }
+
+        return new System.Numerics.Vector3(FloatValue(Field(o, "x"), "origin.x"), FloatValue(Field(o, "y"), "origin.y"), o.TryGetProperty("z", out var z) ? FloatValue(z, "origin.z") : 0f);
+    }
+
     /// <summary>Writes spheres as <c>[{x,y,z,r}]</c>.</summary>
     /// <param name="w">The writer.</param>
     /// <param name="name">The property name.</param>
