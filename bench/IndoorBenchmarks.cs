@@ -1,6 +1,5 @@
 using AcPhys.Core;
 using AcPhys.Spec.Scenes;
-using BenchmarkDotNet.Attributes;
 
 namespace AcPhys.Bench;
 

@@ -1,5 +1,4 @@
 using AcPhys.Core;
-using BenchmarkDotNet.Attributes;
 
 namespace AcPhys.Bench;
 

@@ -1,6 +1,5 @@
 using System.Numerics;
 using AcPhys.Core;
-using BenchmarkDotNet.Attributes;
 
 namespace AcPhys.Bench;
 

@@ -180,6 +180,7 @@ internal static class VerifyCommand
         }
 
         report.WriteFailures(results);
+        FindingsText.Write(results);
         report.WriteSummary(results, stopwatch.Elapsed);
         report.WriteFiles(results, stopwatch.Elapsed);
         return results.Any(r => r.Status == ResultStatus.Failed) ? ExitCodes.Violated : ExitCodes.Ok;

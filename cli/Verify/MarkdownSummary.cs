@@ -30,6 +30,7 @@ internal static class MarkdownSummary
             md.Append($"| `{r.Invariant.Id}` | {Verdict(r.Status)} | {cases} | {applicable} | {Fmt.Seconds(r.Elapsed)} |\n");
         }
 
+        FindingsText.Append(md, run.Results);
         foreach (var r in run.Results.Where(r => r.Status == ResultStatus.Failed))
         {
             var detail = run.Failures.GetValueOrDefault(r.Invariant.Id);

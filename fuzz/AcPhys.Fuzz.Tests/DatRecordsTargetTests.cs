@@ -1,5 +1,4 @@
 using AcPhys.Fuzz.Targets;
-using Xunit;
 
 namespace AcPhys.Fuzz.Tests;
 

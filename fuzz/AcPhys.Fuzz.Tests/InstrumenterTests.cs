@@ -1,8 +1,6 @@
 using System.Reflection;
 using AcPhys.Core;
 using AcPhys.Fuzz.Toy;
-using SharpFuzz;
-using Xunit;
 using SharpTrace = SharpFuzz.Common.Trace;
 
 namespace AcPhys.Fuzz.Tests;

@@ -1,5 +1,4 @@
 using System.Security.Cryptography;
-using AcPhys.Spec.Corpus;
 
 namespace AcPhys.Fuzz;
 

@@ -26,6 +26,17 @@ public sealed class ConformanceProperties(ITestOutputHelper output)
     [Fact(DisplayName = "OUTSIDE-CELLS-CONFORMANCE: outside_cells answers the reference's cells in the reference's order")]
     public void OutsideCells() => PropertyRun.Check(ConformanceInvariants.OutsideCells, output);
 
+    [Fact(DisplayName = "FIND-CELL-QUERY-CONFORMANCE: one find_cell query from any kind of position, with and without spheres, answers exactly as the reference")]
+    public void FindCellQuery() => PropertyRun.Check(ConformanceInvariants.FindCellQuery, output);
+
+    [Fact(DisplayName = "FIND-CELL-QUERY-CONFORMANCE (current-first, ACE, double declared): each declared mode is compared with the reference in that mode")]
+    public void FindCellQueryModes()
+    {
+        PropertyRun.Check(ConformanceInvariants.FindCellQuery, output, ReferenceAdapter.CurrentFirst);
+        PropertyRun.Check(ConformanceInvariants.FindCellQuery, output, Ace);
+        PropertyRun.Check(ConformanceInvariants.FindCellQuery, output, ReferenceAdapter.Double);
+    }
+
     [Fact(DisplayName = "LANDDEFS-CONFORMANCE: every LandDefs op answers as the reference")]
     public void LandDefs() => PropertyRun.Check(ConformanceInvariants.LandDefs, output);
 }

@@ -11,6 +11,9 @@ public sealed class OutdoorInvariantProperties(ITestOutputHelper output)
     [Fact(DisplayName = "COVERAGE: every cell the disc overlaps (3 x 3 neighbourhood) is in the set")]
     public void Coverage() => PropertyRun.Check(OutdoorInvariants.Coverage, output);
 
+    [Fact(DisplayName = "NONFINITE-SPHERE-ENDS-LOOP: a sphere with a NaN or infinite centre adds nothing and ends the sphere loop (hardening)")]
+    public void NonFiniteSphereEndsLoop() => PropertyRun.Check(OutdoorInvariants.NonFiniteSphereEndsLoop, output);
+
     [Fact(DisplayName = "SOUNDNESS: every cell in the set is within r + 1 mm of a centre per axis")]
     public void Soundness() => PropertyRun.Check(OutdoorInvariants.Soundness, output);
 

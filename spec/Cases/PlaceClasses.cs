@@ -15,13 +15,13 @@ public static class PlaceClasses
         {
             tags.Add("centre:nonfinite");
         }
-        else if (c.Spheres.Any(s => float.IsSubnormal(s.Center.X) || float.IsSubnormal(s.Center.Y)))
-        {
-            tags.Add("centre:subnormal");
-        }
         else if (c.Spheres.Any(s => Math.Abs(s.Center.X) >= 1e6 || Math.Abs(s.Center.Y) >= 1e6))
         {
             tags.Add("centre:huge");
+        }
+        else if (c.Spheres.Any(s => float.IsSubnormal(s.Center.X) || float.IsSubnormal(s.Center.Y)))
+        {
+            tags.Add("centre:subnormal");
         }
 
         if (Position(c.Cell) is string position)

@@ -10,13 +10,13 @@ namespace AcPhys.Spec.Faults;
 /// </summary>
 internal sealed class FaultyPhysics : ICellPhysics
 {
-    private readonly PlantedFault fault;
+    private readonly PlantedFault[] faults;
     private readonly List<CellId> stale = [];
     private int inherited;
 
-    public FaultyPhysics(PlantedFault fault) => this.fault = fault;
+    public FaultyPhysics(params PlantedFault[] faults) => this.faults = faults;
 
-    public string Name => "reference+" + fault.Id;
+    public string Name => "reference+" + string.Join("+", faults.Select(f => f.Id));
 
     public Op Ops => Op.All;
 
@@ -132,7 +132,7 @@ internal sealed class FaultyPhysics : ICellPhysics
         return new AdjustResult(true, LcoordToGid(lc.X, lc.Y), Rebase(x), Rebase(y));
     }
 
-    private bool Is(PlantedFault f) => ReferenceEquals(fault, f);
+    private bool Is(PlantedFault f) => Array.IndexOf(faults, f) >= 0;
 
     private int BlockY(CellId id) => Is(PlantedFaults.SignExtendBlockY) ? (sbyte)id.BlockY : id.BlockY;
 

@@ -195,6 +195,21 @@ public static class PlantedFaults
     /// <returns>The fault, or null.</returns>
     public static PlantedFault? Find(string id) => All.FirstOrDefault(f => string.Equals(f.Id, id, StringComparison.OrdinalIgnoreCase));
 
+    /// <summary>
+    /// Returns the outdoor fault model with several faults switched on at once: a port with more than one bug, to show
+    /// that a run reports the second behind the first (issue #18).
+    /// </summary>
+    /// <param name="ids">Fault ids of the outdoor / LandDefs model (not the indoor, parts or scene faults).</param>
+    /// <returns>The faulty adapter.</returns>
+    /// <exception cref="ArgumentException">An id is unknown or not one of the model's faults.</exception>
+    public static ICellPhysics Combine(params string[] ids)
+    {
+        var faults = ids.Select(id => Find(id) is { } f && IndoorFaults.Create(f) is null && !f.Id.StartsWith("ace-", StringComparison.Ordinal)
+            ? f
+            : throw new ArgumentException($"'{id}' is not a fault of the outdoor model", nameof(ids))).ToArray();
+        return new FaultyPhysics(faults);
+    }
+
     /// <summary>Returns the reference implementation with the named fault switched on.</summary>
     /// <param name="id">The fault id.</param>
     /// <returns>The faulty adapter.</returns>

@@ -25,6 +25,49 @@ public static class CatalogueRunner
     /// <typeparam name="TCase">The case type.</typeparam>
     public static InvariantResult Run<TCase>(Invariant<TCase> invariant, ICellPhysics impl, int cases, Seed seed, Action<string>? sink = null)
     {
+        var first = RunOnce(invariant, impl, cases, seed, [], sink);
+        if (first.Status != ResultStatus.Failed || first.Violation?.Case is not TCase shrunk)
+        {
+            return first;
+        }
+
+        // Keep searching within the same budget (issue #18: a second bug behind the first must not stay hidden):
+        // each further search treats violations of the classes already reported as seen, so it fails, and shrinks,
+        // only on a new class.
+        var domain = invariant.Domain;
+        var known = new List<string> { domain.Primary(shrunk) };
+        var more = new List<ClassFailure>();
+        int used = first.Cases;
+        var elapsed = first.Elapsed;
+        for (int round = 1; round < MaxClasses && used < cases; round++)
+        {
+            var next = Seed.Derive(seed.Value, "class-" + round);
+            var again = RunOnce(invariant, impl, cases - used, next, known, null);
+            used += Math.Max(again.Cases, 1);
+            elapsed += again.Elapsed;
+            if (again.Status != ResultStatus.Failed || again.Violation is not { Case: TCase c } v)
+            {
+                break;
+            }
+
+            string cls = domain.Primary(c);
+            if (known.Contains(cls))
+            {
+                break; // shrinking came back to a reported class: nothing new within reach
+            }
+
+            known.Add(cls);
+            more.Add(new ClassFailure(cls, v, again.Replay ?? next));
+        }
+
+        return first with { FailureClass = known[0], MoreFailures = more, Elapsed = elapsed };
+    }
+
+    /// <summary>How many distinct failure classes one invariant reports at most.</summary>
+    public const int MaxClasses = 4;
+
+    private static InvariantResult RunOnce<TCase>(Invariant<TCase> invariant, ICellPhysics impl, int cases, Seed seed, IReadOnlyList<string> excluded, Action<string>? sink)
+    {
         if (invariant.WhyNotTestable(impl) is string reason)
         {
             return new InvariantResult
@@ -50,7 +93,7 @@ public static class CatalogueRunner
             Outcome outcome;
             try
             {
-                outcome = invariant.Check(impl, c);
+                outcome = Check(invariant, impl, c, excluded);
             }
             catch (AdapterFailureException e)
             {
@@ -93,7 +136,7 @@ public static class CatalogueRunner
             ? config.WithReplay(seed.Value, seed.Gamma, size)
             : config.WithReplay(seed.Value, seed.Gamma);
 
-        Check.One(config, Prop.ForAll(domain.Arbitrary, (Func<TCase, Property>)Body));
+        FsCheck.Check.One(config, Prop.ForAll(domain.Arbitrary, (Func<TCase, Property>)Body));
         stopwatch.Stop();
 
         if (adapterFailure is not null)
@@ -114,8 +157,8 @@ public static class CatalogueRunner
 
         if (runner.Result is TestResult.Failed failed)
         {
-            var original = failed.Item2.Head is TCase o ? ViolationOf(invariant, impl, o) : null;
-            var shrunk = failed.Item3.Head is TCase s ? ViolationOf(invariant, impl, s) : null;
+            var original = failed.Item2.Head is TCase o ? ViolationOf(invariant, impl, o, excluded) : null;
+            var shrunk = failed.Item3.Head is TCase s ? ViolationOf(invariant, impl, s, excluded) : null;
             if (original is null && shrunk is null && firstSeen is not null)
             {
                 // A violation was seen but does not come back on re-check: the implementation keeps state between
@@ -191,9 +234,16 @@ public static class CatalogueRunner
         return results;
     }
 
-    private static Violation? ViolationOf<TCase>(Invariant<TCase> invariant, ICellPhysics impl, TCase c)
+    // A violation of an excluded (already reported) class counts as holding, so a further search fails only on a new class.
+    private static Outcome Check<TCase>(Invariant<TCase> invariant, ICellPhysics impl, TCase c, IReadOnlyList<string> excluded)
     {
         var outcome = invariant.Check(impl, c);
+        return outcome.IsViolation && excluded.Count > 0 && excluded.Contains(invariant.Domain.Primary(c)) ? Outcome.Holds : outcome;
+    }
+
+    private static Violation? ViolationOf<TCase>(Invariant<TCase> invariant, ICellPhysics impl, TCase c, IReadOnlyList<string> excluded)
+    {
+        var outcome = Check(invariant, impl, c, excluded);
         return outcome.IsViolation ? new Violation(invariant.Id, outcome.Message ?? "violated", c?.ToString() ?? string.Empty) { Case = Stored(c) } : null;
     }
 

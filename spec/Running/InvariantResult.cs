@@ -45,6 +45,15 @@ public sealed record InvariantResult
     /// <summary>Gets the violation as first found, before shrinking.</summary>
     public Violation? Original { get; init; }
 
+    /// <summary>Gets the failure class of <see cref="Violation"/>: the primary boundary class of its shrunk case.</summary>
+    public string? FailureClass { get; init; }
+
+    /// <summary>
+    /// Gets the further failures of other classes found after the first, within the same case budget, each shrunk
+    /// (the run keeps searching, counting a violation of a class already reported as seen, not as a new failure).
+    /// </summary>
+    public IReadOnlyList<ClassFailure> MoreFailures { get; init; } = [];
+
     /// <summary>Gets the seed and size that replay the failing case.</summary>
     public Seed? Replay { get; init; }
 
@@ -57,3 +66,9 @@ public sealed record InvariantResult
     /// <summary>Gets the time spent.</summary>
     public TimeSpan Elapsed { get; init; }
 }
+
+/// <summary>One more failure class of an invariant: its shrunk violation and the seed that finds it.</summary>
+/// <param name="Class">The failure class (primary boundary class of the shrunk case).</param>
+/// <param name="Violation">The shrunk violation.</param>
+/// <param name="Replay">The seed of the search that found it (with the classes before it excluded).</param>
+public sealed record ClassFailure(string Class, Violation Violation, Seed Replay);

@@ -1,0 +1,56 @@
+using AcPhys.Spec.Running;
+
+namespace AcPhys.Cli.Verify;
+
+/// <summary>Prints a run's findings: one block per root cause with the invariants it breaks and its smallest case (issue #18).</summary>
+internal static class FindingsText
+{
+    /// <summary>Writes the findings after the failures, when any invariant failed.</summary>
+    /// <param name="results">The run's results.</param>
+    public static void Write(IReadOnlyList<InvariantResult> results)
+    {
+        var findings = Findings.Of(results);
+        if (findings.Count == 0)
+        {
+            return;
+        }
+
+        int failures = findings.Sum(f => f.Failures.Count);
+        Terminal.Line();
+        Terminal.Line($"findings: {findings.Count} failure class{(findings.Count == 1 ? string.Empty : "es")} over {failures} failure{(failures == 1 ? string.Empty : "s")} (failures whose shrunk cases share a class are one finding; each invariant reports up to {CatalogueRunner.MaxClasses} classes)");
+        int n = 0;
+        foreach (var f in findings)
+        {
+            var (id, v) = f.Example;
+            Terminal.Line($"  F{++n} [{f.Cause}] breaks {string.Join(", ", f.Invariants)}");
+            Terminal.Line($"     smallest case ({id}): {Brief(v.CaseText)}");
+            Terminal.Line($"     {Brief(v.Message)}");
+        }
+    }
+
+    /// <summary>Appends the findings to a markdown summary.</summary>
+    /// <param name="md">The summary.</param>
+    /// <param name="results">The run's results.</param>
+    public static void Append(System.Text.StringBuilder md, IReadOnlyList<InvariantResult> results)
+    {
+        var findings = Findings.Of(results);
+        if (findings.Count == 0)
+        {
+            return;
+        }
+
+        md.Append("\n### Findings (one per failure class)\n\n| # | class | invariants it breaks | smallest case |\n|---:|---|---|---|\n");
+        int n = 0;
+        foreach (var f in findings)
+        {
+            var (_, v) = f.Example;
+            md.Append($"| F{++n} | `{f.Cause}` | {string.Join(", ", f.Invariants.Select(i => $"`{i}`"))} | `{Brief(v.CaseText).Replace("|", "\\|", StringComparison.Ordinal)}` |\n");
+        }
+    }
+
+    private static string Brief(string text)
+    {
+        string one = text.ReplaceLineEndings(" ");
+        return one.Length <= 200 ? one : one[..199] + "…";
+    }
+}
