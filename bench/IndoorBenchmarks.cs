@@ -1,5 +1,6 @@
 using AcPhys.Core;
 using AcPhys.Spec.Scenes;
+using BenchmarkDotNet.Attributes;
 
 namespace AcPhys.Bench;
 

@@ -1,4 +1,5 @@
 using AcPhys.Core;
+using BenchmarkDotNet.Attributes;
 
 namespace AcPhys.Bench;
 

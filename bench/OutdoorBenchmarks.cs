@@ -1,5 +1,6 @@
 using System.Numerics;
 using AcPhys.Core;
+using BenchmarkDotNet.Attributes;
 
 namespace AcPhys.Bench;
 

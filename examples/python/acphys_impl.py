@@ -98,6 +98,16 @@ def read_spheres(items):
 
 # ---- LandDefs (facts §1-§2) ---------------------------------------------------------------------------------------
 
+def read_origin(request):
+    """the optional "origin" {x, y, z}: the position's own point, sent only with an empty sphere list"""
+    o = request.get("origin")
+    if o is None:
+        return (0.0, 0.0)
+    if not isinstance(o, dict):
+        raise BadRequest("origin must be an object {x, y, z}")
+    return (read_float(o.get("x")), read_float(o.get("y")))
+
+
 def block_x(cell):
     return (cell >> 24) & 0xFF
 
@@ -212,11 +222,11 @@ def check_add_cell_boundary(cells, pt_x, pt_y, x, y, min_rad, max_rad, position)
         add_outside_cell(cells, x, y - 1, position)
 
 
-def outside_cells(position, spheres):
-    """facts §3.3, the sphere variant, every landblock loaded."""
+def outside_cells(position, spheres, origin=(0.0, 0.0)):
+    """facts §3.3, the sphere variant, every landblock loaded; with no spheres the position's own point is re-seated."""
     cells = []
     if not spheres:
-        ok, cell, _, _ = adjust_to_outside(position, 0.0, 0.0)
+        ok, cell, _, _ = adjust_to_outside(position, origin[0], origin[1])
         if ok:
             add_outside_cell(cells, *gid_to_lcoord(cell), position)
         return cells
@@ -238,9 +248,13 @@ def land_square_contains(cell, px, py):
     return west <= px <= west + CELL_LENGTH and south <= py <= south + CELL_LENGTH   # closed squares
 
 
-def find_cell(position, spheres):
+def find_cell(position, spheres, origin=(0.0, 0.0)):
     """facts §4 on open land: the candidates, then the retail pick (the last cell containing sphere 0's centre)."""
-    cells = outside_cells(position, spheres)
+    if low(position) >= 0x100:
+        # an env cell or block id is indoor by its low word: seeded as itself; on open land no env cell is loaded,
+        # so there is no transit and no pick (facts §4 steps 2-4)
+        return [position], 0
+    cells = outside_cells(position, spheres, origin)
     if not spheres:
         return cells, 0
     sx, sy = spheres[0][0], spheres[0][1]
@@ -286,12 +300,12 @@ def answer(request, ops):
         ok, cell, x, y = adjust_to_outside(read_cell(request["cell"]), read_float(request["x"]), read_float(request["y"]))
         return {"ok": ok, "cell": cell_text(cell), "x": float_value(x), "y": float_value(y)}
     if op == "outside_cells":
-        cells = outside_cells(read_cell(request["cell"]), read_spheres(request["spheres"]))
+        cells = outside_cells(read_cell(request["cell"]), read_spheres(request["spheres"]), read_origin(request))
         return {"cells": [cell_text(c) for c in cells]}
     if op == "find_cell":
         if request.get("scene") is not None:
             return {"error": "scenes not supported (open land only)"}
-        cells, containing = find_cell(read_cell(request["cell"]), read_spheres(request["spheres"]))
+        cells, containing = find_cell(read_cell(request["cell"]), read_spheres(request["spheres"]), read_origin(request))
         return {"cells": [cell_text(c) for c in cells], "containing": cell_text(containing) if containing else None}
     return {"error": "op %r not implemented" % (op,)}
 

@@ -1,3 +1,5 @@
+using SharpFuzz;
+
 // Usage: AcPhys.Fuzz.Instrumenter ASSEMBLY.dll...
 // Rewrites each assembly in place with SharpFuzz's AFL edge probes (every type). All assemblies go through this one
 // process on purpose: SharpFuzz draws block ids from one generator with a fixed seed per process, so separate

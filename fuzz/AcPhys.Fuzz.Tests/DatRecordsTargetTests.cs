@@ -1,4 +1,5 @@
 using AcPhys.Fuzz.Targets;
+using Xunit;
 
 namespace AcPhys.Fuzz.Tests;
 

@@ -1,6 +1,8 @@
 using System.Reflection;
 using AcPhys.Core;
 using AcPhys.Fuzz.Toy;
+using SharpFuzz;
+using Xunit;
 using SharpTrace = SharpFuzz.Common.Trace;
 
 namespace AcPhys.Fuzz.Tests;

@@ -1,5 +1,11 @@
 using System.Text;
 using AcPhys.Fuzz.Targets;
+using AcPhys.Spec.Adapters;
+using AcPhys.Spec.Cases;
+using AcPhys.Spec.Corpus;
+using AcPhys.Spec.Faults;
+using AcPhys.Spec.Invariants;
+using Xunit;
 
 namespace AcPhys.Fuzz.Tests;
 

@@ -1,3 +1,5 @@
+using Xunit;
+
 namespace AcPhys.Fuzz.Tests;
 
 /// <summary>Tests that use the process-wide coverage map run one at a time.</summary>

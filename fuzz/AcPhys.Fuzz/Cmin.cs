@@ -1,4 +1,5 @@
 using System.Security.Cryptography;
+using AcPhys.Spec.Corpus;
 
 namespace AcPhys.Fuzz;
 

@@ -1,5 +1,6 @@
 using AcPhys.Fuzz;
 using AcPhys.Fuzz.Targets;
+using SharpFuzz;
 
 // AcPhys.Fuzz TARGET [INPUT]            serve afl-fuzz on stdin (SharpFuzz fork server), or run INPUT once
 // AcPhys.Fuzz replay TARGET FILE...     replay saved inputs; exit 1 if any crashes

@@ -16,7 +16,14 @@ public static class ExactOutdoor
     /// <param name="cell">The position's cell id.</param>
     /// <param name="spheres">Centres in its block frame; radii must be finite.</param>
     /// <returns>The cells, or null when a radius is not finite (the oracle does not model IEEE infinities).</returns>
-    public static List<CellId>? OutsideCells(CellId cell, IReadOnlyList<Sphere> spheres)
+    public static List<CellId>? OutsideCells(CellId cell, IReadOnlyList<Sphere> spheres) => OutsideCells(cell, Vector3.Zero, spheres);
+
+    /// <summary>Returns the land cells the spheres touch, or with no spheres the position's own cell (facts §3.3 step 3).</summary>
+    /// <param name="cell">The position's cell id.</param>
+    /// <param name="origin">The position's point in its block frame (read only when there are no spheres).</param>
+    /// <param name="spheres">Centres in its block frame; radii must be finite.</param>
+    /// <returns>The cells, or null when a radius is not finite.</returns>
+    public static List<CellId>? OutsideCells(CellId cell, Vector3 origin, IReadOnlyList<Sphere> spheres)
     {
         var cells = new List<CellId>();
         if (spheres.Any(s => !float.IsFinite(s.Radius)))
@@ -26,7 +33,7 @@ public static class ExactOutdoor
 
         if (spheres.Count == 0)
         {
-            if (Column(cell, 0f, 0f) is var (ox, oy, _, _))
+            if (Column(cell, origin.X, origin.Y) is var (ox, oy, _, _))
             {
                 Add(cells, ox, oy);
             }
@@ -89,9 +96,16 @@ public static class ExactOutdoor
     /// <param name="cell">The position's cell id.</param>
     /// <param name="spheres">The spheres.</param>
     /// <returns>The cells and the pick, or null when a radius is not finite.</returns>
-    public static (List<CellId> Cells, CellId Containing)? FindCell(CellId cell, IReadOnlyList<Sphere> spheres)
+    public static (List<CellId> Cells, CellId Containing)? FindCell(CellId cell, IReadOnlyList<Sphere> spheres) => FindCell(cell, Vector3.Zero, spheres);
+
+    /// <summary>Returns the cells and the retail pick of an outdoor query from a land position.</summary>
+    /// <param name="cell">The position's cell id.</param>
+    /// <param name="origin">The position's point (read only when there are no spheres).</param>
+    /// <param name="spheres">The spheres.</param>
+    /// <returns>The cells and the pick, or null when a radius is not finite.</returns>
+    public static (List<CellId> Cells, CellId Containing)? FindCell(CellId cell, Vector3 origin, IReadOnlyList<Sphere> spheres)
     {
-        var cells = OutsideCells(cell, spheres);
+        var cells = OutsideCells(cell, origin, spheres);
         if (cells is null)
         {
             return null;

@@ -41,12 +41,13 @@ public static class PrecisionCheck
     /// <returns>The comparison, or null when the exact oracle does not apply (a non-finite radius).</returns>
     public static PrecisionComparison? Compare(ICellPhysics impl, OutdoorCase c)
     {
-        if (ExactOutdoor.FindCell(c.Cell, c.Spheres) is not var (cells, containing))
+        // An env, block-id or id-0 position is seeded as itself (facts §4 step 3): not an arithmetic question.
+        if (!c.Cell.IsLand || ExactOutdoor.FindCell(c.Cell, c.Origin, c.Spheres) is not var (cells, containing))
         {
             return null;
         }
 
-        var got = impl.FindCell(c.Cell, c.Spheres, CellId.None);
+        var got = impl.FindCell(c.Cell, c.Origin, c.Spheres, CellId.None);
         bool cellsDiffer = !got.Cells.ToHashSet().SetEquals(cells);
         bool pickDiffers = got.Containing != containing;
         string detail = cellsDiffer || pickDiffers
