@@ -38,6 +38,12 @@ public abstract class Invariant
     /// <summary>Gets the pick policy the invariant is about (STABLE-PICK: retail; HYSTERESIS: current-first), or null.</summary>
     public PickPolicy? RequiresPick { get; }
 
+    /// <summary>Gets the retail / hardening label (<see cref="InvariantScope"/>), or null when the invariant has none.</summary>
+    public Scope? Scope => InvariantScope.Of(Id)?.Scope;
+
+    /// <summary>Gets the facts section (retail) or the reason (hardening) of the label, or null.</summary>
+    public string? ScopeReason => InvariantScope.Of(Id)?.Reason;
+
     /// <summary>Gets the kind of case it checks.</summary>
     public abstract Type CaseType { get; }
 
