@@ -32,8 +32,8 @@ public sealed class GateOutputTests
 
         string md = File.ReadAllText(markdown);
         Assert.Contains("## acphys verify: ❌ 1 invariant violated", md, StringComparison.Ordinal);
-        Assert.Contains("| `NO-BOUNDARY-FREEZE` | ❌ **FAIL** |", md, StringComparison.Ordinal);
-        Assert.Contains("| `LCOORD-ROUNDTRIP` | ✅ pass |", md, StringComparison.Ordinal);
+        Assert.Contains("| `NO-BOUNDARY-FREEZE` | retail | ❌ **FAIL** |", md, StringComparison.Ordinal);
+        Assert.Contains("| `LCOORD-ROUNDTRIP` | retail | ✅ pass |", md, StringComparison.Ordinal);
         Assert.Contains("Minimised walk:", md, StringComparison.Ordinal);
         Assert.Contains("The walk on reference+clamp-106:", md, StringComparison.Ordinal);
         Assert.Contains(" | none | [] |", md, StringComparison.Ordinal); // the step where the clamped port freezes

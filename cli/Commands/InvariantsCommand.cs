@@ -19,10 +19,10 @@ internal static class InvariantsCommand
 
     private static int PrintTable()
     {
-        var table = new Table().AddColumns("ID", "Statement", "Source");
+        var table = new Table().AddColumns("ID", "Scope", "Statement", "Source");
         foreach (var invariant in InvariantCatalogue.All)
         {
-            table.AddRow(new Text(invariant.Id), new Text(invariant.Statement), new Text(invariant.Source));
+            table.AddRow(new Text(invariant.Id), new Text(invariant.Scope is { } scope ? InvariantScope.Name(scope) : "-"), new Text(invariant.Statement), new Text(invariant.Source));
         }
 
         Terminal.Out.Write(table);

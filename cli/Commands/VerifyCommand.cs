@@ -34,6 +34,11 @@ internal static class VerifyCommand
             Description = "Leave out these invariants (comma-separated or repeated), e.g. the conformance ones to see what the independent invariants catch.",
             HelpName = "ID[,ID...]",
         };
+        var scope = new Option<string>("--scope")
+        {
+            Description = "Run the retail invariants (what retail does), the hardening ones (rules beyond retail that protect a port), or all (default).",
+            HelpName = "retail|hardening|all",
+        };
         var seed = new Option<string>("--seed")
         {
             Description = "Use this seed for every invariant (no exhaustive sweeps); a failure's replay seed reproduces it.",
@@ -73,7 +78,7 @@ internal static class VerifyCommand
         var implOptions = new ImplementationOptions();
         var command = new Command("verify", "Run the invariant catalogue against the reference core, a planted fault, or your implementation (--impl, --impl-cmd), and report.")
         {
-            profile, only, except, seed, baseSeed, fault, quiet, classes, pick, fidelity, cases, sweeps, junit, markdown,
+            profile, only, except, scope, seed, baseSeed, fault, quiet, classes, pick, fidelity, cases, sweeps, junit, markdown,
         };
         foreach (var option in implOptions.All)
         {
@@ -83,7 +88,7 @@ internal static class VerifyCommand
         command.SetAction(parse => Guard.Run("verify", () =>
         {
             var settings = VerifySettings.Parse(
-                parse.GetValue(profile) ?? DefaultProfile(), parse.GetValue(only), parse.GetValue(seed), parse.GetValue(baseSeed), parse.GetValue(fault), parse.GetValue(except))
+                parse.GetValue(profile) ?? DefaultProfile(), parse.GetValue(only), parse.GetValue(seed), parse.GetValue(baseSeed), parse.GetValue(fault), parse.GetValue(except), parse.GetValue(scope))
                 with
             {
                 Quiet = parse.GetValue(quiet),

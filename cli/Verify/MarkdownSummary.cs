@@ -22,12 +22,12 @@ internal static class MarkdownSummary
         md.Append($"{run.SeedText}, {Fmt.Seconds(run.Elapsed)}: ");
         md.Append($"{run.Passed} passed, {run.Failed} failed, {run.NotTested} not tested.\n\n");
 
-        md.Append("| Invariant | Verdict | Cases | Applicable | Time |\n|---|---|---:|---:|---:|\n");
+        md.Append("| Invariant | Scope | Verdict | Cases | Applicable | Time |\n|---|---|---|---:|---:|---:|\n");
         foreach (var r in run.Results)
         {
             string cases = r.Status == ResultStatus.NotTested ? "-" : r.ExhaustiveCases > 0 ? $"{Fmt.Count(r.Cases)} + {Fmt.Count(r.ExhaustiveCases)}" : Fmt.Count(r.Cases);
             string applicable = r.Status == ResultStatus.NotTested ? "-" : Fmt.Percent(r.Applicable, r.Cases);
-            md.Append($"| `{r.Invariant.Id}` | {Verdict(r.Status)} | {cases} | {applicable} | {Fmt.Seconds(r.Elapsed)} |\n");
+            md.Append($"| `{r.Invariant.Id}` | {(r.Invariant.Scope is { } scope ? Spec.Invariants.InvariantScope.Name(scope) : "-")} | {Verdict(r.Status)} | {cases} | {applicable} | {Fmt.Seconds(r.Elapsed)} |\n");
         }
 
         FindingsText.Append(md, run.Results);

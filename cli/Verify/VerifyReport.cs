@@ -216,6 +216,12 @@ internal sealed class VerifyReport(VerifySettings settings, ICellPhysics impl)
             Terminal.Line();
         }
 
+        // Retail statements and hardening rules kept apart (issue #18): a port that matches retail may fail only the latter.
+        Terminal.Line("by scope: " + string.Join("; ", new[] { Spec.Invariants.Scope.Retail, Spec.Invariants.Scope.Hardening }.Select(scope =>
+        {
+            var mine = results.Where(r => r.Invariant.Scope == scope).ToArray();
+            return $"{Spec.Invariants.InvariantScope.Name(scope)} {mine.Count(r => r.Status == ResultStatus.Passed)} passed, {mine.Count(r => r.Status == ResultStatus.Failed)} failed, {mine.Count(r => r.Status == ResultStatus.NotTested)} not tested";
+        })));
         Terminal.Line($"verify: {results.Count} invariant{(results.Count == 1 ? string.Empty : "s")}, {passed} passed, {failed} failed, {notTested} not tested ({string.Join(", ", details)})");
     }
 

@@ -66,9 +66,10 @@ internal sealed record VerifySettings
     /// <param name="baseSeed">The <c>--base-seed</c> value.</param>
     /// <param name="fault">The <c>--fault</c> value.</param>
     /// <param name="except">The <c>--except</c> values: invariants left out (e.g. the conformance ones, to see what the independent invariants catch).</param>
+    /// <param name="scope">The <c>--scope</c> value: retail, hardening or all (default).</param>
     /// <returns>The settings.</returns>
     /// <exception cref="UsageException">A value is unknown or malformed.</exception>
-    public static VerifySettings Parse(string? profileName, string[]? only, string? seed, string? baseSeed, string? fault, string[]? except = null)
+    public static VerifySettings Parse(string? profileName, string[]? only, string? seed, string? baseSeed, string? fault, string[]? except = null, string? scope = null)
     {
         var profile = Spec.Running.Profile.Find(profileName ?? "pr")
             ?? throw new UsageException($"unknown profile '{profileName}' (known: pr, nightly; the default comes from ACPHYS_PROFILE when set)");
@@ -110,6 +111,21 @@ internal sealed record VerifySettings
         if (left.Count > 0 && run.Count == 0)
         {
             throw new UsageException("--except leaves no invariant to run");
+        }
+
+        if (scope is not null && scope != "all")
+        {
+            var wanted = scope switch
+            {
+                "retail" => Scope.Retail,
+                "hardening" => Scope.Hardening,
+                _ => throw new UsageException($"unknown scope '{Brief(scope)}' (known: retail, hardening, all)"),
+            };
+            run = [.. (run.Count == 0 ? InvariantCatalogue.All.Select(i => i.Id) : run).Where(id => InvariantScope.Of(id)?.Scope == wanted)];
+            if (run.Count == 0)
+            {
+                throw new UsageException($"--scope {scope} leaves no invariant to run");
+            }
         }
 
         return new VerifySettings
@@ -161,4 +177,6 @@ internal sealed record VerifySettings
             : ulong.TryParse(text, NumberStyles.None, CultureInfo.InvariantCulture, out v);
         return ok ? v : null;
     }
+
+    private static string Brief(string text) => text.Length <= 40 ? text : text[..39] + "…";
 }

@@ -95,7 +95,7 @@ public static class LandInvariants
     /// <summary>OUTSIDE-LCOORD-GEOMETRY.</summary>
     public static readonly Invariant<LandCase> OutsideLcoordGeometry = new(
         "OUTSIDE-LCOORD-GEOMETRY",
-        "get_outside_lcoord(id, x, y) is the 24 m column containing the point, (8·bx + ⌊x/24⌋, 8·by + ⌊y/24⌋) with floor toward −∞, and fails exactly when the id is malformed, a coordinate is not finite, or the column is off the map.",
+        "get_outside_lcoord(id, x, y) is the 24 m column containing a finite point, (8·bx + ⌊x/24⌋, 8·by + ⌊y/24⌋) with floor toward −∞, and fails exactly when the id is malformed or the column is off the map (non-finite points: NONFINITE-REJECTED, a hardening rule, facts §6.17).",
         "facts §2 get_outside_lcoord, §6.2",
         Op.GetOutsideLcoord,
         LandDomain.Instance,
