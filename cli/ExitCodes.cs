@@ -12,6 +12,9 @@ internal static class ExitCodes
     /// <summary>Usage or tool error: bad option, unknown ID, malformed input, an implementation that could not answer.</summary>
     public const int ToolError = 2;
 
+    /// <summary>An output path (<c>-o</c>, <c>--junit</c>, <c>--markdown</c>, <c>--json</c>) cannot be written; checked before the work starts.</summary>
+    public const int OutputError = 3;
+
     /// <summary>Interrupted by SIGINT (Ctrl-C): 128 + 2.</summary>
     public const int Interrupted = 130;
 

@@ -69,6 +69,9 @@ internal static class Guard
     {
         switch (error)
         {
+            case OutputPathException:
+                Terminal.Error(verb, error.Message);
+                return ExitCodes.OutputError;
             case UsageException or CorpusFormatException or AcPhys.Spec.Dat.DatFormatException:
                 Terminal.Error(verb, error.Message);
                 break;

@@ -31,15 +31,23 @@ internal static class Program
         var parse = root.Parse(args);
         if (parse.Errors.Count > 0 && parse.Action is ParseErrorAction)
         {
-            // System.CommandLine's own messages, a suggestion for a mistyped verb, then a pointer to the help; exit 2.
-            foreach (var error in parse.Errors)
+            // A clear message per error (unknown verb first, with a suggestion), then a pointer to the help; exit 2.
+            bool atRoot = parse.CommandResult.Command == root;
+            string? unknownVerb = atRoot ? parse.UnmatchedTokens.FirstOrDefault(t => !t.StartsWith('-')) : null;
+            if (unknownVerb is not null)
             {
-                Console.Error.WriteLine(error.Message);
+                string shown = unknownVerb.Length > 64 ? unknownVerb[..64] + "…" : unknownVerb;
+                Console.Error.WriteLine($"unknown command '{shown}'" + (Suggest.Closest(unknownVerb, root.Subcommands.Select(c => c.Name)) is { } verb ? $"; did you mean '{verb}'?" : string.Empty));
             }
 
-            if (parse.CommandResult.Command == root && Suggest.Closest(parse.UnmatchedTokens.FirstOrDefault(), root.Subcommands.Select(c => c.Name)) is { } verb)
+            foreach (var error in parse.Errors)
             {
-                Console.Error.WriteLine($"Did you mean '{verb}'?");
+                if (unknownVerb is not null && (error.Message.StartsWith("Required command", StringComparison.Ordinal) || error.Message.Contains($"'{unknownVerb}'", StringComparison.Ordinal)))
+                {
+                    continue; // said above, better
+                }
+
+                Console.Error.WriteLine(ParseErrors.Explain(error.Message));
             }
 
             string command = parse.CommandResult.Command == root ? string.Empty : " " + parse.CommandResult.Command.Name;

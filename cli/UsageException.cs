@@ -1,7 +1,7 @@
 namespace AcPhys.Cli;
 
 /// <summary>Bad input the user can fix (an unknown ID, a malformed seed, ...): reported on one line, exit 2, no stack trace.</summary>
-internal sealed class UsageException : Exception
+internal class UsageException : Exception
 {
     /// <summary>Initializes a new instance.</summary>
     /// <param name="message">What is wrong, for a person; one line.</param>

@@ -63,10 +63,10 @@ public sealed class GateOutputTests
     }
 
     [Fact]
-    public void UnwritableOutputIsExit2()
+    public void UnwritableOutputIsExit3()
     {
         var run = Acphys.Run(["verify", "--only", "ADJUST-RANGE", "--cases", "10", "--junit", "/proc/acphys/out.xml"]);
-        Assert.True(run.Exit == 2, run.ToString());
+        Assert.True(run.Exit == 3, run.ToString());
         Assert.Contains("cannot write '/proc/acphys/out.xml'", run.Err, StringComparison.Ordinal);
     }
 

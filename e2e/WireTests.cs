@@ -226,4 +226,12 @@ public sealed class WireTests
         Assert.StartsWith("{\"error\":\"unknown op", huge, StringComparison.Ordinal);
         Assert.True(huge.Length < 200, $"the error echoes {huge.Length} characters");
     }
+
+    [Fact]
+    public void DuplicateKeysInARequestAreAnErrorNamingThePath()
+    {
+        // Once the last "op" won silently.
+        var server = new ProtocolServer(ReferenceAdapter.Instance);
+        Assert.Equal("{\"error\":\"malformed request: $.op: duplicate key (each key once per object)\"}", server.Answer("{\"op\":\"hello\",\"op\":\"frob\"}"));
+    }
 }

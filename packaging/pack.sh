@@ -10,17 +10,21 @@ root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 out="$root/artifacts/packages"
 configuration=Release
 extra=()
+no_build=0
 while [[ $# -gt 0 ]]; do
   case "$1" in
     -o|--output) out="$2"; shift 2 ;;
     -c|--configuration) configuration="$2"; shift 2 ;;
     --version) extra+=("-p:Version=$2"); shift 2 ;;
-    --no-build) extra+=("--no-build"); shift ;;
+    --no-build) extra+=("--no-build"); no_build=1; shift ;;
     *) echo "pack.sh: unknown argument '$1' (known: -o DIR, -c CONFIG, --version X.Y.Z, --no-build)" >&2; exit 2 ;;
   esac
 done
 
 mkdir -p "$out"
+# A build made here (with --version) must not replace the checkout's own cli/bin, which ./acphys runs (issue 19: it
+# changed `./acphys --version`): build output and intermediates go to artifacts/pack-build. --no-build packs what is built.
+if [[ $no_build == 0 ]]; then extra+=("--artifacts-path" "$root/artifacts/pack-build"); fi
 for project in core/AcPhys.Core.csproj spec/AcPhys.Spec.csproj cli/AcPhys.Cli.csproj; do
   packable=()
   [[ "$project" == core/* ]] && packable=("-p:IsPackable=true")

@@ -1,6 +1,5 @@
 using System.CommandLine;
 using AcPhys.Cli.Verify;
-using AcPhys.Spec.Corpus;
 using AcPhys.Spec.Faults;
 using AcPhys.Spec.Invariants;
 using AcPhys.Spec.Running;
@@ -69,13 +68,8 @@ internal static class BiteCommand
             throw new UsageException($"--seeds must be at least 1 (got {seeds})");
         }
 
-        foreach (var path in new[] { markdownPath, jsonPath })
-        {
-            if (!string.IsNullOrEmpty(path) && Directory.Exists(path))
-            {
-                throw new UsageException($"cannot write {path}: it is a directory");
-            }
-        }
+        OutputPath.Check("--markdown", markdownPath);
+        OutputPath.Check("--json", jsonPath);
 
         IReadOnlyList<KnownBug> catalogue;
         try
@@ -191,13 +185,6 @@ internal static class BiteCommand
             return;
         }
 
-        try
-        {
-            AtomicFile.WriteAllText(path, text());
-        }
-        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
-        {
-            throw new UsageException($"cannot write {path}: {e.Message}", e);
-        }
+        OutputPath.Write(path, text());
     }
 }

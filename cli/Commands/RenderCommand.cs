@@ -2,7 +2,6 @@ using System.CommandLine;
 using AcPhys.Cli.Render;
 using AcPhys.Cli.Replay;
 using AcPhys.Spec.Adapters;
-using AcPhys.Spec.Corpus;
 using AcPhys.Spec.Faults;
 
 namespace AcPhys.Cli.Commands;
@@ -18,7 +17,7 @@ internal static class RenderCommand
     public static Command Create()
     {
         var file = new Argument<string>("file") { Description = "A walk file (kind \"walk\" or \"scene-walk\"), or a record folder holding a scene walk." };
-        var output = new Option<string>("--output", "-o") { Description = "The SVG file to write (atomically).", HelpName = "FILE", Required = true };
+        var output = new Option<string>("--output", "-o") { Description = "The SVG file to write (atomically), or - for stdout.", HelpName = "FILE", Required = true };
         var fault = new Option<string>("--fault") { Description = "Run the walk against the reference with this planted fault.", HelpName = "FAULT" };
         var command = new Command("render", "Draw a walk or a scene walk as SVG, with the first violating step highlighted.") { file, output, fault };
         command.SetAction(parse => Guard.Run("render", () => Run(parse.GetValue(file) ?? string.Empty, parse.GetValue(output)!, parse.GetValue(fault))));
@@ -27,6 +26,7 @@ internal static class RenderCommand
 
     private static int Run(string path, string output, string? faultId)
     {
+        OutputPath.Check("-o", output);
         if (!CaseFiles.Exists(path))
         {
             throw new UsageException($"{(path.Length == 0 ? "''" : path)}: no such file or record folder");
@@ -48,15 +48,28 @@ internal static class RenderCommand
         if (entry.SceneWalk is { } sw)
         {
             var sceneCheck = SceneWalkCheck.Run(impl, sw);
-            AtomicFile.WriteAllText(output, SceneSvg.Render(sw, sceneCheck, $"{entry.Title} — {impl.Name}"));
-            Terminal.Line($"render: wrote {output} ({sceneCheck.Trace.Count - 1} steps, {sw.Scene.Cells.Count} env cells, {sw.Scene.PortalCount} portals, "
+            OutputPath.Write(output, SceneSvg.Render(sw, sceneCheck, $"{entry.Title} — {impl.Name}"));
+            Said(output, $"render: wrote {output} ({sceneCheck.Trace.Count - 1} steps, {sw.Scene.Cells.Count} env cells, {sw.Scene.PortalCount} portals, "
                 + $"{(sceneCheck.FirstViolatingStep is int f ? $"first violation at step {f}" : "no violation")})");
             return ExitCodes.Ok;
         }
 
         var check = WalkReplay.Check(impl, entry.Walk!);
-        AtomicFile.WriteAllText(output, WalkSvg.Render(entry.Walk!, check, $"{entry.Title} — {impl.Name}"));
-        Terminal.Line($"render: wrote {output} ({check.Trace.Count - 1} steps, {(check.FirstViolatingStep is int s ? $"first violation at step {s}" : "no violation")})");
+        OutputPath.Write(output, WalkSvg.Render(entry.Walk!, check, $"{entry.Title} — {impl.Name}"));
+        Said(output, $"render: wrote {output} ({check.Trace.Count - 1} steps, {(check.FirstViolatingStep is int s ? $"first violation at step {s}" : "no violation")})");
         return ExitCodes.Ok;
+    }
+
+    // The summary line goes to stderr when the picture itself went to stdout.
+    private static void Said(string output, string line)
+    {
+        if (output == OutputPath.Stdout)
+        {
+            Console.Error.WriteLine(line);
+        }
+        else
+        {
+            Terminal.Line(line);
+        }
     }
 }

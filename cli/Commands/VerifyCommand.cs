@@ -87,6 +87,8 @@ internal static class VerifyCommand
 
         command.SetAction(parse => Guard.Run("verify", () =>
         {
+            OutputPath.Check("--junit", parse.GetValue(junit));
+            OutputPath.Check("--markdown", parse.GetValue(markdown));
             var settings = VerifySettings.Parse(
                 parse.GetValue(profile) ?? DefaultProfile(), parse.GetValue(only), parse.GetValue(seed), parse.GetValue(baseSeed), parse.GetValue(fault), parse.GetValue(except), parse.GetValue(scope))
                 with

@@ -15,6 +15,7 @@ internal static class WalkSvg
 {
     private const double Scale = 8; // pixels per metre at most; shrunk for large walks
     private const double MaxPixels = 1400;
+    private const double MaxSpan = 70_000; // metres: more than the whole landscape
     private const double MinPixels = 720;
     private const double Header = 52;
     private const double LegendLine = 14;
@@ -31,7 +32,14 @@ internal static class WalkSvg
         double reach = walk.Body.Select(b => Math.Max(Math.Abs(b.Offset.X), Math.Abs(b.Offset.Y)) + b.Radius).DefaultIfEmpty(0).Max();
         double minX = Math.Floor((points.Min(p => p.X) - reach - 36) / 24) * 24, maxX = Math.Ceiling((points.Max(p => p.X) + reach + 36) / 24) * 24;
         double minY = Math.Floor((points.Min(p => p.Y) - reach - 36) / 24) * 24, maxY = Math.Ceiling((points.Max(p => p.Y) + reach + 36) / 24) * 24;
-        double scale = Math.Clamp(MinPixels / (maxX - minX), 1e-3, Math.Min(Scale, MaxPixels / Math.Max(maxX - minX, maxY - minY)));
+        double span = Math.Max(maxX - minX, maxY - minY);
+        if (!double.IsFinite(span) || span > MaxSpan)
+        {
+            // The grid is drawn cell by cell: a walk across more than the world cannot be drawn (and is not a world walk).
+            throw new UsageException(string.Create(CultureInfo.InvariantCulture, $"render draws walks up to {MaxSpan:0} m across (the world is smaller); this one spans {span:G4} m"));
+        }
+
+        double scale = Math.Clamp(MinPixels / (maxX - minX), 1e-3, Math.Min(Scale, MaxPixels / span));
         double width = Math.Max((maxX - minX) * scale, MinPixels), height = (maxY - minY) * scale;
         int legendRows = Math.Min(check.Trace.Count, 16) + 1;
         double legend = (legendRows * LegendLine) + 10;

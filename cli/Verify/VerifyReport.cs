@@ -254,16 +254,8 @@ internal sealed class VerifyReport(VerifySettings settings, ICellPhysics impl)
 
     private static void WriteFile(string path, string text)
     {
-        try
-        {
-            AtomicFile.WriteAllText(path, text);
-        }
-        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
-        {
-            throw new UsageException($"cannot write '{path}': {e.Message}", e);
-        }
-
-        if (!Terminal.ShowsProgress)
+        OutputPath.Write(path, text);
+        if (path == OutputPath.Stdout || !Terminal.ShowsProgress)
         {
             return;
         }

@@ -47,6 +47,15 @@ public sealed class BadScenes
         Assert.True(e.Message.Contains(expected, StringComparison.Ordinal), $"{label}: got \"{e.Message}\"");
     }
 
+    [Fact(DisplayName = "A key given twice in a scene is refused with its path (it once kept the last silently)")]
+    public void DuplicateKeyIsRefused()
+    {
+        int open = Valid.IndexOf('{', StringComparison.Ordinal);
+        string json = Valid[..(open + 1)] + "\"blocks\":[]," + Valid[(open + 1)..]; // a second "blocks", before the real one
+        var e = Assert.Throws<SceneFormatException>(() => SceneJson.Read(json, "bad.json"));
+        Assert.Contains("bad.json: $.blocks: duplicate key", e.Message, StringComparison.Ordinal);
+    }
+
     [Fact(DisplayName = "A written scene reads back to the same text")]
     public void RoundTrip()
     {

@@ -16,6 +16,9 @@ public static class CorpusJson
     /// <summary>The value of the <c>format</c> field.</summary>
     public const string FormatName = "acphys-case";
 
+    /// <summary>The longest title a case file may carry, in characters (issue 19: a 50 MB title was echoed to stdout).</summary>
+    public const int MaxTitle = 4096;
+
     private static readonly JsonWriterOptions WriterOptions = new() { Indented = true, Encoder = System.Text.Encodings.Web.JavaScriptEncoder.UnsafeRelaxedJsonEscaping };
 
     /// <summary>Serialises an entry.</summary>
@@ -104,12 +107,18 @@ public static class CorpusJson
         {
             var root = doc.RootElement;
             Require(root.ValueKind == JsonValueKind.Object, source, "$", "expected an object");
+            if (JsonKeys.FirstDuplicate(root) is { } duplicate)
+            {
+                throw new CorpusFormatException($"{source}: {duplicate}: duplicate key \"{duplicate[(duplicate.LastIndexOf('.') + 1)..]}\" (each key once per object)");
+            }
+
             Require(Str(root, "format", source) == FormatName, source, "$.format", $"expected \"{FormatName}\"");
             var version = Prop(root, "version", source);
             Require(version.ValueKind == JsonValueKind.Number && version.TryGetInt32(out int v) && v == CorpusEntry.CurrentVersion, source, "$.version", $"expected {CorpusEntry.CurrentVersion}");
             string kind = Str(root, "kind", source);
             Require(kind is "land" or "walk" or "scene-walk" or "parts", source, "$.kind", "expected \"land\" or \"walk\" (or \"scene-walk\", \"parts\")");
             string title = Str(root, "title", source);
+            Require(title.Length <= MaxTitle, source, "$.title", $"{title.Length} characters; at most {MaxTitle}");
             string foundBy = Str(root, "foundBy", source);
             Require(foundBy is "hand" or "props" or "fuzz" or "spec" or "diff", source, "$.foundBy", "expected hand, props, fuzz, spec or diff");
             string? invariant = OptStr(root, "invariant", source);

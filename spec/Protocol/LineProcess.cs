@@ -1,6 +1,7 @@
 using System.Collections.Concurrent;
 using System.Diagnostics;
 using System.Globalization;
+using System.Runtime.InteropServices;
 using System.Text;
 using AcPhys.Spec.Adapters;
 
@@ -14,13 +15,25 @@ namespace AcPhys.Spec.Protocol;
 internal sealed class LineProcess : IDisposable
 {
     private const int TailLines = 20;
+    private const int SigKill = 9;
+
+    // On Linux and macOS the implementation runs as the leader of its own process group (setsid), with a watcher in
+    // that group that ends the group once acphys is gone: SIGKILL of acphys included, which no handler sees. The
+    // watcher polls the parent once a second and holds none of the pipes, so EOF on the implementation's stdout still
+    // means it closed it. "$1" is the implementation's command line, run by a second sh exactly as before.
+    private const string GroupScript =
+        "p=$PPID; ( trap '' INT TERM HUP; while kill -0 \"$p\" 2>/dev/null; do sleep 1; done; kill -TERM 0; sleep 1; kill -KILL 0 ) </dev/null >/dev/null 2>&1 & exec /bin/sh -c \"$1\"";
+
+    private static readonly ConcurrentDictionary<int, byte> LiveGroups = new();
 
     private readonly Process process;
     private readonly string commandLine;
     private readonly ConcurrentQueue<string> tail = new();
     private readonly Action<string>? stderrSink;
+    private static int exitHooked;
     private Task<string?>? pending;
     private bool dead;
+    private int group;
 
     private LineProcess(Process process, string commandLine, Action<string>? stderrSink)
     {
@@ -39,9 +52,12 @@ internal sealed class LineProcess : IDisposable
     /// <exception cref="AdapterFailureException">It could not be started.</exception>
     public static LineProcess Start(string commandLine, Action<string>? stderrSink)
     {
+        bool grouped = !OperatingSystem.IsWindows() && File.Exists("/usr/bin/setsid");
         var info = OperatingSystem.IsWindows()
             ? new ProcessStartInfo("cmd.exe") { ArgumentList = { "/d", "/c", commandLine } }
-            : new ProcessStartInfo("/bin/sh") { ArgumentList = { "-c", commandLine } };
+            : grouped
+                ? new ProcessStartInfo("/usr/bin/setsid") { ArgumentList = { "/bin/sh", "-c", GroupScript, "acphys-impl", commandLine } }
+                : new ProcessStartInfo("/bin/sh") { ArgumentList = { "-c", commandLine } };
         info.RedirectStandardInput = true;
         info.RedirectStandardOutput = true;
         info.RedirectStandardError = true;
@@ -61,6 +77,13 @@ internal sealed class LineProcess : IDisposable
         {
             process.Dispose();
             throw new AdapterFailureException($"could not start '{commandLine}': {e.Message}", e);
+        }
+
+        if (grouped)
+        {
+            child.group = process.Id;
+            LiveGroups[process.Id] = 0;
+            EnsureExitHook();
         }
 
         process.BeginErrorReadLine();
@@ -133,7 +156,40 @@ internal sealed class LineProcess : IDisposable
             Kill();
         }
 
+        KillGroup();
         process.Dispose();
+    }
+
+    /// <summary>Ends every implementation process group still running (acphys is exiting, a signal stopped the run).</summary>
+    internal static void KillAllGroups()
+    {
+        foreach (int pgid in LiveGroups.Keys)
+        {
+            if (LiveGroups.TryRemove(pgid, out _))
+            {
+                _ = NativeKill(-pgid, SigKill);
+            }
+        }
+    }
+
+    private static void EnsureExitHook()
+    {
+        if (Interlocked.Exchange(ref exitHooked, 1) == 0)
+        {
+            AppDomain.CurrentDomain.ProcessExit += (_, _) => KillAllGroups();
+        }
+    }
+
+    [DllImport("libc", EntryPoint = "kill", SetLastError = true)]
+    [DefaultDllImportSearchPaths(DllImportSearchPath.SafeDirectories)]
+    private static extern int NativeKill(int pid, int signal);
+
+    private void KillGroup()
+    {
+        if (group != 0 && LiveGroups.TryRemove(group, out _))
+        {
+            _ = NativeKill(-group, SigKill); // the implementation, anything it started, and the watcher
+        }
     }
 
     private AdapterFailureException Died(string what, Exception? inner)
@@ -156,6 +212,7 @@ internal sealed class LineProcess : IDisposable
 
     private void Kill()
     {
+        KillGroup();
         try
         {
             process.Kill(entireProcessTree: true);

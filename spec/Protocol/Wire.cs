@@ -59,6 +59,12 @@ public static class Wire
             throw new WireException($"expected a JSON object, got {kind}");
         }
 
+        if (AcPhys.Spec.Corpus.JsonKeys.FirstDuplicate(doc.RootElement) is { } duplicate)
+        {
+            doc.Dispose();
+            throw new WireException($"{duplicate}: duplicate key (each key once per object)");
+        }
+
         return doc;
     }
 

@@ -170,6 +170,11 @@ public static class SceneJson
 
         using (doc)
         {
+            if (AcPhys.Spec.Corpus.JsonKeys.FirstDuplicate(doc.RootElement) is { } duplicate)
+            {
+                throw new SceneFormatException($"{source}: {duplicate}: duplicate key (each key once per object)");
+            }
+
             return Read(doc.RootElement, source, "$");
         }
     }

@@ -1,0 +1,54 @@
+using System.Text.Json;
+
+namespace AcPhys.Spec.Corpus;
+
+/// <summary>
+/// Finds a key given twice in one JSON object. System.Text.Json keeps the last silently, so a duplicated <c>kind</c> once
+/// surfaced as a misleading "missing" elsewhere (issue 19); corpus files, scene files and protocol requests refuse it.
+/// </summary>
+public static class JsonKeys
+{
+    /// <summary>Returns the JSON path of the first key that appears twice in one object (e.g. <c>$.walk.kind</c>), or null.</summary>
+    /// <param name="element">The root to search.</param>
+    /// <returns>The path of the second occurrence, or null when every object's keys are distinct.</returns>
+    public static string? FirstDuplicate(JsonElement element) => Find(element, "$");
+
+    private static string? Find(JsonElement element, string path)
+    {
+        switch (element.ValueKind)
+        {
+            case JsonValueKind.Object:
+                var seen = new HashSet<string>(StringComparer.Ordinal);
+                foreach (var property in element.EnumerateObject())
+                {
+                    string at = path + "." + property.Name;
+                    if (!seen.Add(property.Name))
+                    {
+                        return at;
+                    }
+
+                    if (Find(property.Value, at) is { } inner)
+                    {
+                        return inner;
+                    }
+                }
+
+                return null;
+            case JsonValueKind.Array:
+                int i = 0;
+                foreach (var item in element.EnumerateArray())
+                {
+                    if (Find(item, $"{path}[{i}]") is { } inner)
+                    {
+                        return inner;
+                    }
+
+                    i++;
+                }
+
+                return null;
+            default:
+                return null;
+        }
+    }
+}
