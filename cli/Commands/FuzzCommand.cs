@@ -32,11 +32,12 @@ internal static class FuzzCommand
         var regressions = new Option<string>("--regressions") { Description = "Where minimised regressions go (default corpus/regressions).", HelpName = "DIR" };
         var fresh = new Option<bool>("--fresh") { Description = "Wipe the campaign folder first (no resume)." };
         var untilCrash = new Option<bool>("--until-crash") { Description = "Stop at the first crash (time-to-first-crash measurements)." };
+        var buildDir = new Option<string>("--build-dir") { Description = "Where the instrumented harness is built (default .fuzz/build, shared by campaigns).", HelpName = "DIR" };
         var noBuild = new Option<bool>("--no-build") { Description = "Reuse the instrumented build in .fuzz/build as it is." };
         var triageOnly = new Option<bool>("--triage-only") { Description = "Do not fuzz: triage the crashes the campaign's sync folder holds (e.g. collected from other machines)." };
         var command = new Command("fuzz", "Run an AFL++ campaign on a fuzz target, then triage crashes into minimised regressions with replay lines.")
         {
-            minutes, jobs, target, fault, quiet, timeout, campaign, regressions, fresh, untilCrash, noBuild, triageOnly,
+            minutes, jobs, target, fault, quiet, timeout, campaign, regressions, fresh, untilCrash, buildDir, noBuild, triageOnly,
         };
         command.SetAction(parse => Run(() =>
         {
@@ -79,6 +80,11 @@ internal static class FuzzCommand
                 NoBuild = parse.GetValue(noBuild),
                 TriageOnly = parse.GetValue(triageOnly),
             };
+            if (parse.GetValue(buildDir) is { Length: > 0 } dir)
+            {
+                settings = settings with { BuildDir = Path.GetFullPath(dir) };
+            }
+
             return settings;
         }));
         return command;

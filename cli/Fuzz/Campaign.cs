@@ -29,7 +29,7 @@ internal sealed class Campaign(FuzzSettings s, CancellationToken stop)
             throw new UsageException("setpriv (util-linux) is needed to stop afl-fuzz when acphys dies; install util-linux");
         }
 
-        HarnessBuild.Ensure(s, Say);
+        HarnessBuild.Ensure(s, Say, stop);
         var (seeds, seedCrashes) = PrepareSeeds();
         string? dictionary = WriteDictionary();
         bool resumed = Directory.Exists(Path.Combine(s.SyncDir, "main", "queue"));

@@ -23,6 +23,8 @@ internal sealed record FuzzSettings(
     string RegressionsDir,
     string SeedCorpusDir)
 {
+    private readonly string? buildDir;
+
     /// <summary>Gets a value indicating whether only the summary is printed (CI).</summary>
     public bool Quiet { get; init; }
 
@@ -44,8 +46,12 @@ internal sealed record FuzzSettings(
     /// <summary>Gets the folder of logs.</summary>
     public string LogDir => Path.Combine(CampaignDir, "logs");
 
-    /// <summary>Gets the instrumented build (shared by campaigns: <c>.fuzz/build</c>).</summary>
-    public string BuildDir => Path.Combine(Root, ".fuzz", "build");
+    /// <summary>Gets the instrumented build (shared by campaigns: <c>.fuzz/build</c> unless <c>--build-dir</c> names another).</summary>
+    public string BuildDir
+    {
+        get => buildDir ?? Path.Combine(Root, ".fuzz", "build");
+        init => buildDir = value;
+    }
 
     /// <summary>Gets the harness executable.</summary>
     public string Harness => Path.Combine(BuildDir, "harness", "AcPhys.Fuzz");

@@ -9,8 +9,14 @@ internal static class HarnessBuild
     /// <summary>Builds into <see cref="FuzzSettings.BuildDir"/> unless <see cref="FuzzSettings.NoBuild"/> and a build is there.</summary>
     /// <param name="s">The settings.</param>
     /// <param name="say">Progress sink.</param>
-    /// <exception cref="UsageException">A publish or the instrumentation failed (the log is named).</exception>
-    public static void Ensure(FuzzSettings s, Action<string> say)
+    /// <param name="stop">Cancelled by Ctrl-C / SIGTERM: the build step in progress is killed with everything it started.</param>
+    /// <exception cref="UsageException">A publish or the instrumentation failed (the log is named), or <paramref name="stop"/> fired.</exception>
+    /// <remarks><para>
+    /// Every step runs through <see cref="GuardedChild"/>, and <c>dotnet publish</c> with <c>--disable-build-servers</c>
+    /// (no MSBuild node reuse, no compiler server), so a killed acphys leaves no <c>dotnet publish</c> writing the
+    /// build folder (issue #17 part 2, issue #19 "Orphans").
+    /// </para></remarks>
+    public static void Ensure(FuzzSettings s, Action<string> say, CancellationToken stop)
     {
         if (s.NoBuild && File.Exists(s.Harness))
         {
@@ -20,10 +26,10 @@ internal static class HarnessBuild
 
         Directory.CreateDirectory(s.LogDir);
         say($"build: publishing the harness and the instrumenter (Release) into {s.BuildDir}");
-        Publish(s, "fuzz/AcPhys.Fuzz/AcPhys.Fuzz.csproj", "harness");
-        Publish(s, "fuzz/AcPhys.Fuzz.Instrumenter/AcPhys.Fuzz.Instrumenter.csproj", "instrument");
+        Publish(s, "fuzz/AcPhys.Fuzz/AcPhys.Fuzz.csproj", "harness", stop);
+        Publish(s, "fuzz/AcPhys.Fuzz.Instrumenter/AcPhys.Fuzz.Instrumenter.csproj", "instrument", stop);
         var dlls = Instrumented.Select(d => Path.Combine(s.BuildDir, "harness", d)).Where(File.Exists).ToArray();
-        var (code, output) = AflTools.Run(Path.Combine(s.BuildDir, "instrument", "AcPhys.Fuzz.Instrumenter"), dlls);
+        var (code, output) = GuardedChild.Run(Path.Combine(s.BuildDir, "instrument", "AcPhys.Fuzz.Instrumenter"), dlls, null, stop);
         File.WriteAllText(Path.Combine(s.LogDir, "instrument.log"), output);
         if (code != 0)
         {
@@ -36,13 +42,14 @@ internal static class HarnessBuild
         }
     }
 
-    private static void Publish(FuzzSettings s, string project, string folder)
+    private static void Publish(FuzzSettings s, string project, string folder, CancellationToken stop)
     {
         string log = Path.Combine(s.LogDir, $"publish-{folder}.log");
-        var (code, output) = AflTools.Run(
+        var (code, output) = GuardedChild.Run(
             "dotnet",
-            ["publish", Path.Combine(s.Root, project), "-c", "Release", "-o", Path.Combine(s.BuildDir, folder), "--nologo"],
-            new Dictionary<string, string> { ["DOTNET_NOLOGO"] = "1", ["DOTNET_CLI_TELEMETRY_OPTOUT"] = "1" });
+            ["publish", Path.Combine(s.Root, project), "-c", "Release", "-o", Path.Combine(s.BuildDir, folder), "--nologo", "--disable-build-servers"],
+            new Dictionary<string, string> { ["DOTNET_NOLOGO"] = "1", ["DOTNET_CLI_TELEMETRY_OPTOUT"] = "1" },
+            stop);
         File.WriteAllText(log, output);
         if (code != 0)
         {

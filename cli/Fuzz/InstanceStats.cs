@@ -4,9 +4,16 @@ using System.Text.RegularExpressions;
 namespace AcPhys.Cli.Fuzz;
 
 /// <summary>
-/// What one afl-fuzz instance has done, read from its folder: <c>fuzzer_stats</c> (written at exit and every minute),
-/// else the last line of <c>plot_data</c> (every 5 s), and the crash files themselves (counted at once).
+/// What one afl-fuzz instance has done, read from its folder: <c>fuzzer_stats</c> (written after the dry run, then
+/// every minute and at exit), the last line of <c>plot_data</c> (only when the queue or the crash count changed), and
+/// the names of the queue, crash and hang files (<c>time:MS,execs:N</c>, written the moment each is found).
 /// </summary>
+/// <remarks><para>
+/// While afl-fuzz runs, the freshest of these samples gives the executions and the rate (executions over the fuzzing
+/// time of that sample). <c>fuzzer_stats</c>'s own <c>execs_per_sec</c> is taken only once it covers at least a
+/// second: its first write, just after the dry run, divides a few hundred executions by a millisecond or so (issue
+/// #19: a live line frozen at "execs 3,417 exec/s 1708500").
+/// </para></remarks>
 /// <param name="Name">main, sec1, …</param>
 /// <param name="Execs">Executions done.</param>
 /// <param name="ExecsPerSec">Current exec/s.</param>
@@ -26,17 +33,22 @@ internal sealed partial record InstanceStats(string Name, long Execs, double Exe
         string name = Path.GetFileName(dir);
         var stats = KeyValues(Path.Combine(dir, "fuzzer_stats"));
         var plot = LastPlotLine(Path.Combine(dir, "plot_data"));
-        long execs = Math.Max(Long(stats, "execs_done"), Long(plot, "total_execs"));
-        double rate = plot.Count > 0 && !stats.ContainsKey("execs_done") ? Double(plot, "execs_per_sec") : Double(stats, "execs_per_sec");
-        int paths = (int)Math.Max(Long(stats, "corpus_count"), Long(plot, "corpus_count"));
         var crashFiles = CrashFiles(dir).ToList();
-        var current = CrashFiles(dir, currentOnly: true).Select(f => TimeExecs().Match(Path.GetFileName(f))).Where(m => m.Success)
-            .Select(m => (Ms: long.Parse(m.Groups[1].Value, CultureInfo.InvariantCulture), Execs: long.Parse(m.Groups[2].Value, CultureInfo.InvariantCulture)))
-            .OrderBy(t => t.Ms).ToList();
-        int hangs = Directory.Exists(Path.Combine(dir, "hangs")) ? Directory.EnumerateFiles(Path.Combine(dir, "hangs"), "id:*").Count() : 0;
+        var current = CrashFiles(dir, currentOnly: true).Select(Sample).OfType<(long Ms, long Execs)>().OrderBy(t => t.Ms).ToList();
+        var hangFiles = Directory.Exists(Path.Combine(dir, "hangs")) ? Directory.EnumerateFiles(Path.Combine(dir, "hangs"), "id:*").ToList() : [];
+        var queueFiles = Directory.Exists(Path.Combine(dir, "queue")) ? Directory.EnumerateFiles(Path.Combine(dir, "queue"), "id:*") : [];
+        var fromStats = (Ms: Long(stats, "run_time") * 1000, Execs: Long(stats, "execs_done"));
+        var fromPlot = (Ms: Long(plot, "relative_time") * 1000, Execs: Long(plot, "total_execs"));
+        var freshest = queueFiles.Concat(crashFiles).Concat(hangFiles).Select(Sample).OfType<(long Ms, long Execs)>()
+            .Append(fromStats).Append(fromPlot).MaxBy(t => (t.Execs, t.Ms));
+        double rate = fromStats.Execs >= freshest.Execs && fromStats.Ms >= 1000 && Double(stats, "execs_per_sec") > 0
+            ? Double(stats, "execs_per_sec")
+            : Rate(freshest.Execs, freshest.Ms);
+        int paths = (int)Math.Max(Long(stats, "corpus_count"), Long(plot, "corpus_count"));
+        int hangs = hangFiles.Count;
         return new InstanceStats(
             name,
-            execs,
+            freshest.Execs,
             rate,
             paths,
             crashFiles.Count,
@@ -56,6 +68,18 @@ internal sealed partial record InstanceStats(string Name, long Execs, double Exe
             : Directory.EnumerateDirectories(dir, currentOnly ? "crashes" : "crashes*")
                 .SelectMany(d => Directory.EnumerateFiles(d, "id:*"))
                 .Order(StringComparer.Ordinal);
+
+    /// <summary>Gives the executions per second of <paramref name="execs"/> over <paramref name="ms"/> of fuzzing, or 0 under a second (no honest rate yet).</summary>
+    /// <param name="execs">Executions.</param>
+    /// <param name="ms">Milliseconds of fuzzing.</param>
+    /// <returns>The rate.</returns>
+    public static double Rate(long execs, long ms) => ms >= 1000 ? execs * 1000.0 / ms : 0;
+
+    // "id:000063,src:000003,time:498,execs:9828,op:havoc,rep:16": afl time (ms) and executions when the file was saved.
+    private static (long Ms, long Execs)? Sample(string file) =>
+        TimeExecs().Match(Path.GetFileName(file)) is { Success: true } m
+            ? (long.Parse(m.Groups[1].Value, CultureInfo.InvariantCulture), long.Parse(m.Groups[2].Value, CultureInfo.InvariantCulture))
+            : null;
 
     private static Dictionary<string, string> KeyValues(string file)
     {

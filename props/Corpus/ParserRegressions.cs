@@ -1,14 +1,18 @@
 using System.Text;
 using System.Text.Json;
 using AcPhys.Props.Support;
+using AcPhys.Spec.Adapters;
 using AcPhys.Spec.Corpus;
+using AcPhys.Spec.Protocol;
+using AcPhys.Spec.Scenes;
 using Xunit.Abstractions;
 
 namespace AcPhys.Props.Corpus;
 
 /// <summary>
 /// Inputs on which a parser fuzz target (docs/fuzzing.md) once threw something other than the format exception:
-/// corpus/regressions/parsers/TARGET-EXCEPTION-HASH.bin. Each must now be read or rejected with CorpusFormatException.
+/// corpus/regressions/parsers/TARGET-EXCEPTION-HASH.bin. Each must now be read or rejected with the reader's format
+/// exception (CorpusFormatException; SceneFormatException for scene-json), and a serve-request input answered line by line.
 /// </summary>
 public sealed class ParserRegressions(ITestOutputHelper output)
 {
@@ -38,6 +42,27 @@ public sealed class ParserRegressions(ITestOutputHelper output)
             {
                 using var doc = JsonDocument.Parse(data);
                 WalkJson.Read(doc.RootElement, name);
+            }
+            else if (name.StartsWith("serve-request-", StringComparison.Ordinal))
+            {
+                // As the serve-request target: every line answered, only ever with a JSON object (an error answer for a bad request).
+                var server = new ProtocolServer(ReferenceAdapter.Instance);
+                foreach (string line in Encoding.UTF8.GetString(data).Split('\n').Take(8).Where(l => l.Length > 0))
+                {
+                    using var answer = Wire.Parse(server.AnswerChecked(line));
+                    output.WriteLine(Wire.Brief(answer.RootElement.GetRawText(), 200));
+                }
+            }
+            else if (name.StartsWith("scene-json-", StringComparison.Ordinal))
+            {
+                try
+                {
+                    SceneJson.Read(Encoding.UTF8.GetString(data), name);
+                }
+                catch (SceneFormatException e)
+                {
+                    output.WriteLine("rejected: " + e.Message);
+                }
             }
             else
             {

@@ -1,22 +1,18 @@
+using AcPhys.Props.Support;
 using AcPhys.Spec.Cases;
-using FsCheck;
-using FsCheck.Fluent;
 
 namespace AcPhys.Props.Outdoor;
 
 /// <summary>The walk fuzz codec: every byte string becomes a bounded walk that starts in its block.</summary>
 public sealed class WalkCodecTotality
 {
-    [Fact(DisplayName = "WalkCodec: any bytes decode to a walk of 1-3 spheres, at most 16 steps, starting inside its block")]
-    public void AnyBytesDecode() =>
-        Check.One(
-            Config.QuickThrowOnFailure.WithMaxTest(3000).WithReplay(0x3A1C, 0x9E3779B97F4A7C15UL | 1),
-            Prop.ForAll(ArbMap.Default.ArbFor<byte[]>(), bytes =>
-            {
-                var walk = WalkCodec.Decode(bytes ?? []);
-                return walk.Body.Count is >= 1 and <= 3 && walk.Steps.Count <= WalkCodec.MaxSteps && walk.StartsInBlock
-                    && walk.StartCell.IsLand && walk.Steps.All(s => float.IsFinite(s.X) && float.IsFinite(s.Y));
-            }));
+    [CiProperty(MaxTest = 3000, DisplayName = "WalkCodec: any bytes decode to a walk of 1-3 spheres, at most 16 steps, starting inside its block")]
+    public bool AnyBytesDecode(byte[] bytes)
+    {
+        var walk = WalkCodec.Decode(bytes ?? []);
+        return walk.Body.Count is >= 1 and <= 3 && walk.Steps.Count <= WalkCodec.MaxSteps && walk.StartsInBlock
+            && walk.StartCell.IsLand && walk.Steps.All(s => float.IsFinite(s.X) && float.IsFinite(s.Y));
+    }
 
     [Fact(DisplayName = "WalkCodec: the empty input is the zero walk (cell 0x00000001 at the origin, no steps)")]
     public void EmptyInput()

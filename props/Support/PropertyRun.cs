@@ -8,13 +8,20 @@ using Xunit.Sdk;
 namespace AcPhys.Props.Support;
 
 /// <summary>
-/// The bridge between FsCheck and xunit (FsCheck.Xunit is not served by the registry copy, so this small file does
-/// its job): runs an invariant as an FsCheck property with the CI seed, writes FsCheck's class distribution to the
-/// test output, and on failure throws with the seed and a one-line replay command.
+/// The catalogue bridge: runs an invariant of the catalogue as an FsCheck property with the CI seed, writes FsCheck's
+/// class distribution to the test output, and on failure throws with the seed and a one-line replay command.
 /// </summary>
 /// <remarks>
+/// <para>
+/// Properties that are plain FsCheck properties are <c>[Property]</c> tests of FsCheck.Xunit (with
+/// <see cref="CiPropertyAttribute"/> for the CI seed). This bridge stays only for what FsCheck.Xunit cannot do: one
+/// <c>ACPHYS_SEED</c> for every property, the profiles' case counts, the failure files in artifacts/failures, and the
+/// <c>acphys replay</c> lines printed on failure.
+/// </para>
+/// <para>
 /// Environment: <c>ACPHYS_PROFILE=nightly</c> (fresh seeds, 40× the cases), <c>ACPHYS_SEED=seed,gamma[,size]</c>
 /// (replay one seed for every property).
+/// </para>
 /// </remarks>
 internal static class PropertyRun
 {

@@ -39,7 +39,7 @@ public static class Wire
     /// <summary>Parses one message line into its root object.</summary>
     /// <param name="line">The line.</param>
     /// <returns>The parsed document (dispose it).</returns>
-    /// <exception cref="WireException">Not a JSON object.</exception>
+    /// <exception cref="WireException">Not a JSON object, or a string or name in it is not valid text.</exception>
     public static JsonDocument Parse(string line)
     {
         JsonDocument doc;
@@ -57,6 +57,12 @@ public static class Wire
         {
             doc.Dispose(); // the kind is read first: a disposed document's root cannot be asked (issue #19)
             throw new WireException($"expected a JSON object, got {kind}");
+        }
+
+        if (Corpus.JsonStrings.FirstUnreadable(doc.RootElement, "$") is { } bad)
+        {
+            doc.Dispose();
+            throw new WireException($"{bad}: not valid text (a lone UTF-16 surrogate escape)");
         }
 
         if (AcPhys.Spec.Corpus.JsonKeys.FirstDuplicate(doc.RootElement) is { } duplicate)

@@ -189,6 +189,11 @@ public static class SceneJson
     {
         var r = new Reader(source);
         r.Require(e.ValueKind == JsonValueKind.Object, at, "expected an object");
+        if (Corpus.JsonStrings.FirstUnreadable(e, at) is { } bad)
+        {
+            throw new SceneFormatException($"{source}: {bad}: not valid text (a lone UTF-16 surrogate escape)");
+        }
+
         var blocks = r.BlockList(e, "blocks", at, required: true);
         var unloadedBlocks = r.BlockList(e, "unloadedBlocks", at, required: false);
         var declared = new HashSet<LandblockId>();
