@@ -41,10 +41,10 @@ public sealed class ChildProcessTests
         _ = acphys.StandardError.ReadToEndAsync();
         try
         {
-            Assert.True(WaitUntil(() => Matching(sleep).Any(c => c.StartsWith(sleep, StringComparison.Ordinal)), TimeSpan.FromSeconds(60)), "the implementation never started");
+            Assert.True(Poll.Until(TimeSpan.FromSeconds(60), () => Matching(sleep).Any(c => c.StartsWith(sleep, StringComparison.Ordinal))), "the implementation never started");
             Send(signal, acphys.Id);
             Assert.True(acphys.WaitForExit(TimeSpan.FromSeconds(30)), "acphys did not exit");
-            bool gone = WaitUntil(() => Matching(sleep).Count == 0, TimeSpan.FromSeconds(seconds));
+            bool gone = Poll.Until(TimeSpan.FromSeconds(seconds), () => Matching(sleep).Count == 0);
             Assert.True(gone, $"after SIGKILL/TERM/INT ({signal}) these survived {seconds} s: " + string.Join(" | ", Matching(sleep)));
         }
         finally
@@ -62,21 +62,6 @@ public sealed class ChildProcessTests
         kill.WaitForExit();
     }
 
-    private static bool WaitUntil(Func<bool> condition, TimeSpan limit)
-    {
-        var clock = Stopwatch.StartNew();
-        while (clock.Elapsed < limit)
-        {
-            if (condition())
-            {
-                return true;
-            }
-
-            Thread.Sleep(100);
-        }
-
-        return condition();
-    }
 
     /// <summary>Returns the command lines of running processes that mention <paramref name="text"/>.</summary>
     private static List<string> Matching(string text)

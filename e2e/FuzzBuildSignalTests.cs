@@ -45,7 +45,7 @@ public sealed class FuzzBuildSignalTests : IDisposable
         var stderr = acphys.StandardError.ReadToEndAsync();
         try
         {
-            Assert.True(Eventually(TimeSpan.FromSeconds(120), () => Publishes(BuildDir).Count > 0), "dotnet publish never started");
+            Assert.True(Poll.Until(TimeSpan.FromSeconds(120), () => Publishes(BuildDir).Count > 0), "dotnet publish never started");
             Thread.Sleep(500); // let MSBuild start its worker nodes; an up-to-date publish still runs for seconds after this
             var started = Descendants(acphys.Id);
             Assert.NotEmpty(started);
@@ -59,7 +59,7 @@ public sealed class FuzzBuildSignalTests : IDisposable
             }
 
             // The guard kills the whole group the moment it hears of it: 2 s is slack, not a wait for the build to end.
-            bool gone = Eventually(TimeSpan.FromSeconds(2), () => started.All(p => !Alive(p.Pid, p.Start)));
+            bool gone = Poll.Until(TimeSpan.FromSeconds(2), () => started.All(p => !Alive(p.Pid, p.Start)));
             Assert.True(gone, "still running 2 s after SIGKILL/SIGTERM of acphys: " + string.Join("; ", started.Where(p => Alive(p.Pid, p.Start)).Select(p => $"{p.Pid} {p.CommandLine}")));
             string before = Snapshot(BuildDir);
             Thread.Sleep(2000);
@@ -86,21 +86,6 @@ public sealed class FuzzBuildSignalTests : IDisposable
         return kill.ExitCode;
     }
 
-    private static bool Eventually(TimeSpan limit, Func<bool> condition)
-    {
-        var clock = Stopwatch.StartNew();
-        while (clock.Elapsed < limit)
-        {
-            if (condition())
-            {
-                return true;
-            }
-
-            Thread.Sleep(100);
-        }
-
-        return condition();
-    }
 
     // Every process whose command line runs `dotnet publish ... -o BUILD/...`.
     private static List<int> Publishes(string buildDir) =>
