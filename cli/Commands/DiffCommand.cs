@@ -1,11 +1,8 @@
 using System.CommandLine;
 using System.Diagnostics;
-using System.Globalization;
 using AcPhys.Cli.Diff;
 using AcPhys.Cli.Impl;
-using AcPhys.Cli.Verify;
 using AcPhys.Spec.Adapters;
-using AcPhys.Spec.Corpus;
 using AcPhys.Spec.Running;
 using Spectre.Console;
 
@@ -13,8 +10,8 @@ namespace AcPhys.Cli.Commands;
 
 /// <summary>
 /// The <c>diff</c> verb: differential testing. Generated queries and walks go to an implementation and to the reference
-/// core; the first divergence of each kind is shrunk and written as a replayable case or walk file beside a
-/// side-by-side table of the two answers.
+/// core; every diverging input is counted in its divergence class (op, shape of the difference, input class), and each
+/// class's first input is shrunk and written as a replayable case or walk file beside a side-by-side table.
 /// </summary>
 internal static class DiffCommand
 {
@@ -80,12 +77,11 @@ internal static class DiffCommand
 
             if (!quiet)
             {
-                Terminal.Line($"diff: {impl.Name} against {reference.Name}; {Fmt.Count(cases)} generated inputs per check, ops both offer: {string.Join(", ", OpNames.Names(impl.Ops))}");
+                Terminal.Line($"diff: {impl.Name} against {reference.Name}; {Fmt.Count(cases)} generated inputs per check, every divergence counted in its class, ops both offer: {string.Join(", ", OpNames.Names(impl.Ops))}");
             }
 
             var stopwatch = Stopwatch.StartNew();
-            var table = new Table().AddColumn("Check").AddColumn(new TableColumn("Inputs").RightAligned()).AddColumn("Verdict").AddColumn(new TableColumn("Time").RightAligned());
-            var results = new List<InvariantResult>();
+            var results = new List<DiffResult>();
             ProgressBars.Run($"diff {impl.Name}", checks.Count, advance =>
             {
                 foreach (var check in checks)
@@ -95,72 +91,24 @@ internal static class DiffCommand
                 }
             },
             enabled: !quiet);
-            foreach (var result in results)
-            {
-                var check = result.Invariant;
-                string verdict = result.Status switch
-                {
-                    ResultStatus.Passed => "same",
-                    ResultStatus.Failed => "DIFFERS",
-                    _ => "not compared (" + result.NotTestedReason + ")",
-                };
-                table.AddRow(check.Id, result.Status == ResultStatus.NotTested ? "-" : Fmt.Count(result.Cases), verdict, Fmt.Seconds(result.Elapsed));
-            }
 
             if (!quiet)
             {
-                Terminal.Out.Write(table);
+                Terminal.Out.Write(DiffReport.Overview(results));
             }
 
-            foreach (var r in results.Where(r => r.Status == ResultStatus.Failed))
-            {
-                Report(r, impl, reference, choice, cases, folder);
-            }
-
-            int differs = results.Count(r => r.Status == ResultStatus.Failed);
+            var report = new DiffReport(impl, reference, choice, cases, folder);
+            var rows = results.Where(r => r.Differs).SelectMany(report.Write).ToArray();
+            int differs = results.Count(r => r.Differs);
             Terminal.Line();
-            Terminal.Line($"diff: {results.Count} checks, {results.Count(r => r.Status == ResultStatus.Passed)} same, {differs} differ, {results.Count(r => r.Status == ResultStatus.NotTested)} not compared ({Fmt.Seconds(stopwatch.Elapsed)})");
+            if (differs > 0)
+            {
+                Terminal.Line($"summary  {report.WriteSummary(results, rows)}");
+            }
+
+            string classes = differs > 0 ? $"; {rows.Length} divergence class{(rows.Length == 1 ? string.Empty : "es")} over {Fmt.Count(results.Sum(r => r.Divergent))} inputs" : string.Empty;
+            Terminal.Line($"diff: {results.Count} checks, {results.Count(r => r.NotComparedReason is null && !r.Differs)} same, {differs} differ, {results.Count(r => r.NotComparedReason is not null)} not compared{classes} ({Fmt.Seconds(stopwatch.Elapsed)})");
             return differs > 0 ? ExitCodes.Violated : ExitCodes.Ok;
         }
-    }
-
-    private static void Report(InvariantResult r, ICellPhysics impl, ICellPhysics reference, ImplementationChoice choice, int cases, string folder)
-    {
-        var v = r.Violation!;
-        Terminal.Line();
-        Terminal.Out.MarkupLine($"[red bold]DIFFERS[/] [bold]{Markup.Escape(r.Invariant.Id)}[/]: {Markup.Escape(impl.Name)} vs {Markup.Escape(reference.Name)}");
-        Terminal.Line($"  shrunk     {v.CaseText}");
-        Terminal.Line($"  first      {v.Message}");
-        var rows = SideBySide.Rows(v.Case, impl, reference);
-        var table = new Table().AddColumn("Query").AddColumn(impl.Name).AddColumn(reference.Name).AddColumn(string.Empty);
-        foreach (var (query, mine, theirs) in rows)
-        {
-            table.AddRow(new Text(query), new Text(mine), new Text(theirs), new Markup(mine == theirs ? string.Empty : "[red]differs[/]"));
-        }
-
-        Terminal.Out.Write(table);
-
-        var words = new List<string> { ReplayLine.Program, "diff", "--only", r.Invariant.Id, "--cases", cases.ToString(CultureInfo.InvariantCulture) };
-        if (r.Replay is Seed replay)
-        {
-            words.AddRange(["--seed", replay.ToString()]);
-        }
-
-        words.AddRange(choice.Words());
-        string replayLine = string.Join(' ', words.Select(ReplayLine.Quote));
-        Terminal.Line($"  seed       {r.Seed}");
-        Terminal.Line($"  replay     {replayLine}");
-
-        string? caseFile = FailureFile.Write(v, folder, "diff", r.Seed.ToString());
-        string sideFile = Path.Combine(folder, (caseFile is null ? r.Invariant.Id : Path.GetFileNameWithoutExtension(caseFile)) + ".diff.md");
-        string header = $"# {r.Invariant.Id}: {impl.Name} vs {reference.Name}\n\n{r.Invariant.Statement}\n\nShrunk input: `{v.CaseText}`\n\nFirst divergence: {v.Message}\n\n";
-        string files = caseFile is null ? string.Empty : $"Replay the walk/case against either side: `{ReplayLine.Program} replay {caseFile}{(choice.Words().Count > 0 ? " " + string.Join(' ', choice.Words().Select(ReplayLine.Quote)) : string.Empty)}`\n\n";
-        AtomicFile.WriteAllText(sideFile, header + SideBySide.Markdown(rows, impl.Name) + $"\nSeed `{r.Seed}`; replay the diff: `{replayLine}`\n\n" + files);
-        if (caseFile is not null)
-        {
-            Terminal.Line($"  case file  {caseFile}");
-        }
-
-        Terminal.Line($"  side by side {sideFile}");
     }
 }

@@ -19,8 +19,8 @@ internal static class ServeCommand
     {
         var fault = new Option<string>("--fault")
         {
-            Description = "Serve the reference with this planted fault switched on (see: acphys faults).",
-            HelpName = "FAULT",
+            Description = "Serve the reference with this planted fault switched on (see: acphys faults); several outdoor faults comma-separated make a port with several bugs.",
+            HelpName = "FAULT[,FAULT...]",
         };
         var pick = new Option<string>("--pick")
         {
@@ -55,12 +55,23 @@ internal static class ServeCommand
                 throw new UsageException("--fault serves a planted fault in retail mode; it does not combine with --fidelity");
             }
 
-            if (PlantedFaults.Find(faultId) is not { } fault)
+            string[] ids = faultId.Split(',', StringSplitOptions.RemoveEmptyEntries | StringSplitOptions.TrimEntries);
+            foreach (string id in ids.Length == 0 ? [faultId] : ids)
             {
-                throw new UsageException($"unknown fault '{faultId}' (known: {string.Join(", ", PlantedFaults.All.Select(f => f.Id))})");
+                if (PlantedFaults.Find(id) is null)
+                {
+                    throw new UsageException($"unknown fault '{id}' (known: {string.Join(", ", PlantedFaults.All.Select(f => f.Id))})");
+                }
             }
 
-            impl = PlantedFaults.Create(fault.Id);
+            try
+            {
+                impl = ids.Length == 1 ? PlantedFaults.Create(ids[0]) : PlantedFaults.Combine(ids);
+            }
+            catch (ArgumentException e)
+            {
+                throw new UsageException("--fault with several faults takes outdoor faults only: " + e.Message);
+            }
         }
 
         var utf8 = new UTF8Encoding(false);

@@ -1,3 +1,4 @@
+using System.Diagnostics.CodeAnalysis;
 using AcPhys.Core;
 using AcPhys.Spec.Adapters;
 using AcPhys.Spec.Cases;
@@ -17,41 +18,82 @@ internal static class Answers
     /// <returns>(op call, answer) pairs.</returns>
     public static IReadOnlyList<(string Call, string Answer)> Land(ICellPhysics impl, LandCase c, Op ops)
     {
+
         var rows = new List<(string, string)>();
         if ((ops & Op.BlockIdToLcoord) != 0)
         {
-            rows.Add(($"blockid_to_lcoord({c.Cell})", Lcoord(impl.BlockIdToLcoord(c.Cell, out var lc), lc)));
+            rows.Add(($"blockid_to_lcoord({c.Cell})", Ask(() => Lcoord(impl.BlockIdToLcoord(c.Cell, out var lc), lc))));
         }
 
         if ((ops & Op.GidToLcoord) != 0)
         {
-            rows.Add(($"gid_to_lcoord({c.Cell})", Lcoord(impl.GidToLcoord(c.Cell, out var lc), lc)));
+            rows.Add(($"gid_to_lcoord({c.Cell})", Ask(() => Lcoord(impl.GidToLcoord(c.Cell, out var lc), lc))));
         }
 
         if ((ops & Op.LcoordToGid) != 0)
         {
-            rows.Add(($"lcoord_to_gid({c.Lcoord.X}, {c.Lcoord.Y})", impl.LcoordToGid(c.Lcoord.X, c.Lcoord.Y).ToString()));
+            rows.Add(($"lcoord_to_gid({c.Lcoord.X}, {c.Lcoord.Y})", Ask(() => impl.LcoordToGid(c.Lcoord.X, c.Lcoord.Y).ToString())));
         }
 
         if ((ops & Op.InboundValidCellId) != 0)
         {
-            rows.Add(($"inbound_valid_cellid({c.Cell})", impl.InboundValidCellId(c.Cell) ? "true" : "false"));
+            rows.Add(($"inbound_valid_cellid({c.Cell})", Ask(() => impl.InboundValidCellId(c.Cell) ? "true" : "false")));
         }
 
         string point = $"{c.Cell}, {Float(c.X)}, {Float(c.Y)}";
         if ((ops & Op.GetOutsideLcoord) != 0)
         {
-            rows.Add(($"get_outside_lcoord({point})", Lcoord(impl.GetOutsideLcoord(c.Cell, c.X, c.Y, out var lc), lc)));
+            rows.Add(($"get_outside_lcoord({point})", Ask(() => Lcoord(impl.GetOutsideLcoord(c.Cell, c.X, c.Y, out var lc), lc))));
         }
 
         if ((ops & Op.AdjustToOutside) != 0)
         {
-            var r = impl.AdjustToOutside(c.Cell, c.X, c.Y);
-            rows.Add(($"adjust_to_outside({point})", r.Ok ? $"ok {r.Cell} ({Float(r.X)}, {Float(r.Y)})" : "fail"));
+            rows.Add(($"adjust_to_outside({point})", Ask(() =>
+            {
+                var r = impl.AdjustToOutside(c.Cell, c.X, c.Y);
+                return r.Ok ? $"ok {r.Cell} ({Float(r.X)}, {Float(r.Y)})" : "fail";
+            })));
         }
 
         return rows;
     }
+
+    /// <summary>The start of the answer text of a call that threw.</summary>
+    public const string Threw = "threw ";
+
+    /// <summary>
+    /// Asks one question; an exception other than <see cref="AdapterFailureException"/> (the implementation could not
+    /// answer at all) is itself an answer, "threw TYPE", that differs from every real one.
+    /// </summary>
+    /// <param name="ask">The question.</param>
+    /// <param name="answer">The answer, when it came.</param>
+    /// <param name="threw">"threw TYPE", when it did not.</param>
+    /// <typeparam name="T">The answer's type.</typeparam>
+    /// <returns>True when it answered.</returns>
+    public static bool TryAsk<T>(Func<T> ask, [NotNullWhen(true)] out T? answer, [NotNullWhen(false)] out string? threw)
+    {
+        try
+        {
+            answer = ask()!;
+            threw = null;
+            return true;
+        }
+        catch (AdapterFailureException)
+        {
+            throw;
+        }
+        catch (Exception e)
+        {
+            answer = default;
+            threw = Threw + e.GetType().Name;
+            return false;
+        }
+    }
+
+    /// <summary>Asks one question whose answer is text; a throw answers "threw TYPE" (<see cref="TryAsk"/>).</summary>
+    /// <param name="ask">The question.</param>
+    /// <returns>The answer.</returns>
+    public static string Ask(Func<string> ask) => TryAsk(ask, out string? text, out string? threw) ? text : threw;
 
     /// <summary>Formats a list of cells and an optional containing cell.</summary>
     /// <param name="cells">The cells, in insertion order.</param>

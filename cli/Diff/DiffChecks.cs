@@ -1,82 +1,126 @@
+using AcPhys.Core;
 using AcPhys.Spec.Adapters;
 using AcPhys.Spec.Cases;
-using AcPhys.Spec.Invariants;
 
 namespace AcPhys.Cli.Diff;
 
 /// <summary>
-/// The differential checks of <c>acphys diff</c>, written as invariants ("the implementation answers like the
-/// reference") so they run, shrink and replay through the same FsCheck runner as the catalogue. Each compares only
-/// ops both sides offer; the reference uses the pick policy the implementation declares.
+/// The differential checks of <c>acphys diff</c>. Each compares only ops both sides offer, the reference using the
+/// pick policy the implementation declares, and names every diverging input's class: the op, the shape of the
+/// difference (<see cref="CellsDelta"/>) and the input's boundary class.
 /// </summary>
 /// <param name="reference">The reference to compare with.</param>
 internal sealed class DiffChecks(ICellPhysics reference)
 {
     /// <summary>Gets every check, in the order they run.</summary>
-    public IReadOnlyList<Invariant> All =>
+    public IReadOnlyList<DiffCheck> All =>
     [
-        new Invariant<LandCase>("DIFF-LANDDEFS", "Every LandDefs op the implementation offers answers every generated case like the reference.", "differential", Op.None, LandDomain.Instance, Land),
-        new Invariant<OutdoorCase>("DIFF-OUTSIDE-CELLS", "outside_cells gives the reference's cells in the reference's insertion order.", "differential", Op.OutsideCells, OutdoorDomain.Instance, OutsideCells),
-        new Invariant<OutdoorCase>("DIFF-FIND-CELL", "find_cell on open land gives the reference's cells and containing cell (no current cell).", "differential", Op.FindCell, OutdoorDomain.Instance, FindCell),
-        new Invariant<Walk>("DIFF-WALK", "Along a generated walk, every step's find_cell answer (cells and containing cell, with the current cell carried) is the reference's.", "differential", Op.FindCell, WalkDomain.Instance, WalkCheck),
-        new Invariant<PartsCase>("DIFF-PARTS", "outside_cells_parts gives the reference's cells in order.", "differential", Op.OutsideCellsParts, PartsDomain.Instance, Parts),
+        new DiffCheck<LandCase>("DIFF-LANDDEFS", "Every LandDefs op the implementation offers answers every generated case like the reference.", Op.None, LandDomain.Instance, Land),
+        new DiffCheck<OutdoorCase>("DIFF-OUTSIDE-CELLS", "outside_cells gives the reference's cells in the reference's insertion order.", Op.OutsideCells, OutdoorDomain.Instance, OutsideCells),
+        new DiffCheck<OutdoorCase>("DIFF-FIND-CELL", "find_cell on open land gives the reference's cells and containing cell (no current cell).", Op.FindCell, OutdoorDomain.Instance, FindCell),
+        new DiffCheck<Walk>("DIFF-WALK", "Along a generated walk, every step's find_cell answer (cells and containing cell, with the current cell carried) is the reference's.", Op.FindCell, WalkDomain.Instance, WalkCheck),
+        new DiffCheck<PartsCase>("DIFF-PARTS", "outside_cells_parts gives the reference's cells in order.", Op.OutsideCellsParts, PartsDomain.Instance, Parts),
     ];
 
-    private Outcome Land(ICellPhysics impl, LandCase c)
+    private Divergence? Land(ICellPhysics impl, LandCase c)
     {
         var ops = impl.Ops & Op.LandDefs;
-        if (ops == Op.None)
-        {
-            return Outcome.Vacuous;
-        }
-
         var mine = Answers.Land(impl, c, ops);
         var theirs = Answers.Land(reference, c, ops);
         for (int i = 0; i < mine.Count; i++)
         {
-            if (mine[i].Answer != theirs[i].Answer)
-            {
-                return Outcome.Violated($"{mine[i].Call}: implementation {mine[i].Answer} | reference {theirs[i].Answer}");
-            }
-        }
-
-        return Outcome.Holds;
-    }
-
-    private Outcome OutsideCells(ICellPhysics impl, OutdoorCase q)
-    {
-        string mine = Answers.Cells(impl.OutsideCells(q.Cell, q.Spheres));
-        string theirs = Answers.Cells(reference.OutsideCells(q.Cell, q.Spheres));
-        return mine == theirs ? Outcome.Holds : Outcome.Violated($"outside_cells: implementation {mine} | reference {theirs}");
-    }
-
-    private Outcome FindCell(ICellPhysics impl, OutdoorCase q)
-    {
-        var a = impl.FindCell(q.Cell, q.Spheres, default);
-        var b = reference.FindCell(q.Cell, q.Spheres, default);
-        string mine = Answers.Cells(a.Cells, a.Containing), theirs = Answers.Cells(b.Cells, b.Containing);
-        return mine == theirs ? Outcome.Holds : Outcome.Violated($"find_cell: implementation {mine} | reference {theirs}");
-    }
-
-    private Outcome WalkCheck(ICellPhysics impl, Walk walk)
-    {
-        var mine = WalkRunner.Run(impl, walk);
-        var theirs = WalkRunner.Run(reference, walk);
-        for (int i = 0; i < Math.Min(mine.Count, theirs.Count); i++)
-        {
-            string a = Answers.Cells(mine[i].Cells, mine[i].Containing), b = Answers.Cells(theirs[i].Cells, theirs[i].Containing);
+            var (call, a) = mine[i];
+            string b = theirs[i].Answer;
             if (a != b)
             {
-                return Outcome.Violated($"step {i}: implementation {a} | reference {b}");
+                string shape = a.StartsWith(Answers.Threw, StringComparison.Ordinal) ? a
+                    : a == "fail" ? "implementation fails, reference answers"
+                    : b == "fail" ? "implementation answers, reference fails"
+                    : "other answer";
+                return new Divergence($"{call[..call.IndexOf('(', StringComparison.Ordinal)]}: {shape}", LandDomain.Instance.Primary(c), $"{call}: implementation {a} | reference {b}");
             }
         }
 
-        return Outcome.Holds;
+        return null;
     }
 
-    private Outcome Parts(ICellPhysics impl, PartsCase c)
+    private Divergence? OutsideCells(ICellPhysics impl, OutdoorCase q)
     {
-        string mine = Answers.Cells(impl.OutsideCellsParts(c.Parts)), theirs = Answers.Cells(reference.OutsideCellsParts(c.Parts));
-        return mine == theirs ? Outcome.Holds : Outcome.Violated($"outside_cells_parts: implementation {mine} | reference {theirs}");
+        var theirs = reference.OutsideCells(q.Cell, q.Origin, q.Spheres);
+        if (!Answers.TryAsk(() => impl.OutsideCells(q.Cell, q.Origin, q.Spheres), out var mine, out string? threw))
+        {
+            return new Divergence("outside_cells: " + threw, OutdoorDomain.Instance.Primary(q), $"outside_cells: implementation {threw} | reference {Answers.Cells(theirs)}");
+        }
+
+        return CellsDelta.Of(mine, theirs, q.Cell) is string shape
+            ? new Divergence("outside_cells: " + shape, OutdoorDomain.Instance.Primary(q), $"outside_cells: implementation {Answers.Cells(mine)} | reference {Answers.Cells(theirs)}")
+            : null;
+    }
+
+    private Divergence? FindCell(ICellPhysics impl, OutdoorCase q)
+    {
+        var b = reference.FindCell(q.Cell, q.Origin, q.Spheres, default);
+        string theirs = Answers.Cells(b.Cells, b.Containing);
+        if (!Answers.TryAsk(() => impl.FindCell(q.Cell, q.Origin, q.Spheres, default), out var a, out string? threw))
+        {
+            return new Divergence("find_cell: " + threw, OutdoorDomain.Instance.Primary(q), $"find_cell: implementation {threw} | reference {theirs}");
+        }
+
+        return CellsDelta.Class(CellsDelta.Of(a.Cells, b.Cells, q.Cell), CellsDelta.Containing(a.Containing, b.Containing)) is string shape
+            ? new Divergence("find_cell: " + shape, OutdoorDomain.Instance.Primary(q), $"find_cell: implementation {Answers.Cells(a.Cells, a.Containing)} | reference {theirs}")
+            : null;
+    }
+
+    private Divergence? WalkCheck(ICellPhysics impl, Walk walk)
+    {
+        var theirs = WalkRunner.Run(reference, walk);
+        string input = WalkDomain.Instance.Primary(walk);
+        if (!Answers.TryAsk(() => WalkRunner.Run(impl, walk), out var mine, out string? threw))
+        {
+            return new Divergence("find_cell along the walk: " + threw, input, $"implementation {threw}");
+        }
+
+        for (int i = 0; i < Math.Min(mine.Count, theirs.Count); i++)
+        {
+            var (a, b) = (mine[i], theirs[i]);
+            if (CellsDelta.Class(CellsDelta.Of(a.Cells, b.Cells, b.Frame), CellsDelta.Containing(a.Containing, b.Containing)) is string shape)
+            {
+                return new Divergence(
+                    "find_cell along the walk: " + shape,
+                    input,
+                    $"step {i} ({StepKind(theirs, i)}): implementation {Answers.Cells(a.Cells, a.Containing)} | reference {Answers.Cells(b.Cells, b.Containing)}");
+            }
+        }
+
+        return null;
+    }
+
+    private Divergence? Parts(ICellPhysics impl, PartsCase c)
+    {
+        var theirs = reference.OutsideCellsParts(c.Parts);
+        string input = PartsDomain.Instance.Primary(c);
+        if (!Answers.TryAsk(() => impl.OutsideCellsParts(c.Parts), out var mine, out string? threw))
+        {
+            return new Divergence("outside_cells_parts: " + threw, input, $"outside_cells_parts: implementation {threw} | reference {Answers.Cells(theirs)}");
+        }
+
+        var home = c.Parts.Count > 0 ? c.Parts[0].Cell : CellId.None;
+        return CellsDelta.Of(mine, theirs, home) is string shape
+            ? new Divergence("outside_cells_parts: " + shape, input, $"outside_cells_parts: implementation {Answers.Cells(mine)} | reference {Answers.Cells(theirs)}")
+            : null;
+    }
+
+    // Where along the reference's own walk the first divergence falls: what kind of step the reference took there.
+    private static string StepKind(IReadOnlyList<WalkStep> theirs, int i)
+    {
+        if (i == 0)
+        {
+            return "the start";
+        }
+
+        CellId before = theirs[i - 1].Current, after = theirs[i].Current;
+        return before.Landblock != after.Landblock ? "a step across a block line"
+            : before != after ? "a step across a cell line"
+            : "a step within a cell";
     }
 }

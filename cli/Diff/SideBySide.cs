@@ -29,14 +29,17 @@ internal static class SideBySide
                     var rows = new List<(string, string, string)>();
                     if ((impl.Ops & Op.OutsideCells) != 0)
                     {
-                        rows.Add(("outside_cells", Answers.Cells(impl.OutsideCells(q.Cell, q.Spheres)), Answers.Cells(reference.OutsideCells(q.Cell, q.Spheres))));
+                        rows.Add(("outside_cells", Answers.Ask(() => Answers.Cells(impl.OutsideCells(q.Cell, q.Origin, q.Spheres))), Answers.Cells(reference.OutsideCells(q.Cell, q.Origin, q.Spheres))));
                     }
 
                     if ((impl.Ops & Op.FindCell) != 0)
                     {
-                        var x = impl.FindCell(q.Cell, q.Spheres, default);
-                        var y = reference.FindCell(q.Cell, q.Spheres, default);
-                        rows.Add(("find_cell", Answers.Cells(x.Cells, x.Containing), Answers.Cells(y.Cells, y.Containing)));
+                        var y = reference.FindCell(q.Cell, q.Origin, q.Spheres, default);
+                        rows.Add(("find_cell", Answers.Ask(() =>
+                        {
+                            var x = impl.FindCell(q.Cell, q.Origin, q.Spheres, default);
+                            return Answers.Cells(x.Cells, x.Containing);
+                        }), Answers.Cells(y.Cells, y.Containing)));
                     }
 
                     return rows;
@@ -44,8 +47,12 @@ internal static class SideBySide
 
             case Walk walk:
                 {
-                    var a = WalkRunner.Run(impl, walk);
                     var b = WalkRunner.Run(reference, walk);
+                    if (!Answers.TryAsk(() => WalkRunner.Run(impl, walk), out var a, out string? threw))
+                    {
+                        return [("the walk", threw, $"{b.Count} steps answered")];
+                    }
+
                     return a.Zip(b, (x, y) => (
                         $"step {x.Index}: find_cell({x.Frame}, ({Answers.Float(x.Position.X)}, {Answers.Float(x.Position.Y)}), current {(x.Index == 0 ? "none" : a[x.Index - 1].Current.ToString())})",
                         Answers.Cells(x.Cells, x.Containing),
@@ -53,7 +60,7 @@ internal static class SideBySide
                 }
 
             case PartsCase parts:
-                return [("outside_cells_parts", Answers.Cells(impl.OutsideCellsParts(parts.Parts)), Answers.Cells(reference.OutsideCellsParts(parts.Parts)))];
+                return [("outside_cells_parts", Answers.Ask(() => Answers.Cells(impl.OutsideCellsParts(parts.Parts))), Answers.Cells(reference.OutsideCellsParts(parts.Parts)))];
 
             default:
                 return [];
