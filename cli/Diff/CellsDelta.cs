@@ -33,7 +33,7 @@ internal static class CellsDelta
         // exactly the cells of other blocks (the 10,449-frame freeze), while extra cells lie wherever the edge was touched.
         return missing.Length == 0 ? "extra cells"
             : extra.Length == 0 ? $"missing cells ({Where(missing, home)})"
-            : "missing and extra cells";
+            : $"missing and extra cells (missing: {Where(missing, home)})";
     }
 
     /// <summary>Describes how two containing cells differ, or null when they are equal.</summary>
