@@ -44,6 +44,28 @@ public sealed class GateOutputTests
     }
 
     [Fact]
+    public void JunitXmlNamesEachRootCauseOnceWithEveryInvariantItBreaks()
+    {
+        // checked-cast: one port, two root causes (a non-finite and a huge coordinate both throw), several invariants each.
+        string junit = Path.Combine(Directory.CreateTempSubdirectory("acphys-gate-").FullName, "findings.xml");
+        var run = Acphys.Run(["verify", "--fault", "checked-cast", "--only", "LANDDEFS-CONFORMANCE,OUTSIDE-CELLS-CONFORMANCE,NONFINITE-REJECTED,ADJUST-RANGE", "--cases", "500", "--quiet", "--junit", junit]);
+        Assert.True(run.Exit == 1, run.ToString());
+        Assert.Empty(Validate(File.ReadAllText(junit)));
+
+        var suite = XDocument.Load(junit).Root!.Element("testsuite")!;
+        string findings = suite.Element("system-out")!.Value;
+        Assert.Contains("F1 [nonfinite] breaks ", findings, StringComparison.Ordinal);
+        Assert.Contains("F2 [huge] breaks ", findings, StringComparison.Ordinal);
+        foreach (var failure in suite.Elements("testcase").Select(t => t.Element("failure")).OfType<XElement>())
+        {
+            Assert.Contains("finding:   F", failure.Value, StringComparison.Ordinal); // every failure says which root cause it is
+        }
+
+        var nonfiniteOnly = suite.Elements("testcase").Single(t => t.Attribute("name")!.Value == "NONFINITE-REJECTED").Element("failure")!.Value;
+        Assert.DoesNotContain("[huge]", nonfiniteOnly, StringComparison.Ordinal);
+    }
+
+    [Fact]
     public void JunitXmlOfAPassingRunIsAcceptedByTheSchema()
     {
         string junit = Path.Combine(Directory.CreateTempSubdirectory("acphys-gate-").FullName, "pass.xml");

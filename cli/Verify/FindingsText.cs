@@ -15,17 +15,28 @@ internal static class FindingsText
             return;
         }
 
-        int failures = findings.Sum(f => f.Failures.Count);
         Terminal.Line();
-        Terminal.Line($"findings: {findings.Count} failure class{(findings.Count == 1 ? string.Empty : "es")} over {failures} failure{(failures == 1 ? string.Empty : "s")} (failures whose shrunk cases share a class are one finding; each invariant reports up to {CatalogueRunner.MaxClasses} classes)");
+        Console.Out.Write(Plain(findings));
+    }
+
+    /// <summary>Renders findings as plain text lines (the terminal block, and the JUnit suite's system-out).</summary>
+    /// <param name="findings">The findings.</param>
+    /// <returns>The text, one line per row, each ending in a newline.</returns>
+    public static string Plain(IReadOnlyList<Finding> findings)
+    {
+        int failures = findings.Sum(f => f.Failures.Count);
+        var text = new System.Text.StringBuilder();
+        text.Append($"findings: {findings.Count} failure class{(findings.Count == 1 ? string.Empty : "es")} over {failures} failure{(failures == 1 ? string.Empty : "s")} (failures whose shrunk cases share a class are one finding; each invariant reports up to {CatalogueRunner.MaxClasses} classes)\n");
         int n = 0;
         foreach (var f in findings)
         {
             var (id, v) = f.Example;
-            Terminal.Line($"  F{++n} [{f.Cause}] breaks {string.Join(", ", f.Invariants)}");
-            Terminal.Line($"     smallest case ({id}): {Brief(v.CaseText)}");
-            Terminal.Line($"     {Brief(v.Message)}");
+            text.Append($"  F{++n} [{f.Cause}] breaks {string.Join(", ", f.Invariants)}\n");
+            text.Append($"     smallest case ({id}): {Brief(v.CaseText)}\n");
+            text.Append($"     {Brief(v.Message)}\n");
         }
+
+        return text.ToString();
     }
 
     /// <summary>Appends the findings to a markdown summary.</summary>

@@ -7,8 +7,9 @@ namespace AcPhys.Cli.Verify;
 
 /// <summary>
 /// Renders a run as JUnit XML in the common Ant / Jenkins shape (schemas/junit-10.xsd): one <c>testsuite</c>, one
-/// <c>testcase</c> per invariant; a violation is a <c>failure</c> carrying the shrunk case and the replay line, a
-/// missing operation is <c>skipped</c>.
+/// <c>testcase</c> per invariant; a violation is a <c>failure</c> carrying the shrunk case, the replay line and the
+/// findings (root causes, issue #18) it belongs to, a missing operation is <c>skipped</c>; the suite's
+/// <c>system-out</c> lists the findings, so a CI page shows one root cause once, with every invariant it breaks.
 /// </summary>
 internal static class JunitReport
 {
@@ -38,6 +39,7 @@ internal static class JunitReport
             Property(xml, "seed", run.SeedText);
             xml.WriteEndElement();
 
+            var findings = Findings.Of(run.Results);
             foreach (var r in run.Results)
             {
                 xml.WriteStartElement("testcase");
@@ -50,7 +52,7 @@ internal static class JunitReport
                         xml.WriteStartElement("failure");
                         xml.WriteAttributeString("message", $"{r.Invariant.Id}: {r.Violation?.Message ?? "violated"}");
                         xml.WriteAttributeString("type", "InvariantViolated");
-                        xml.WriteString(FailureText(r, run.Failures.GetValueOrDefault(r.Invariant.Id)));
+                        xml.WriteString(FailureText(r, run.Failures.GetValueOrDefault(r.Invariant.Id)) + FindingsOf(r.Invariant.Id, findings));
                         xml.WriteEndElement();
                         break;
                     case ResultStatus.NotTested:
@@ -63,6 +65,13 @@ internal static class JunitReport
                 xml.WriteStartElement("system-out");
                 xml.WriteString($"{r.Invariant.Statement}\ncases {r.Cases}, applicable {r.Applicable}, exhaustive {r.ExhaustiveCases}, seed {r.Seed}\n");
                 xml.WriteEndElement();
+                xml.WriteEndElement();
+            }
+
+            if (findings.Count > 0)
+            {
+                xml.WriteStartElement("system-out");
+                xml.WriteString(FindingsText.Plain(findings));
                 xml.WriteEndElement();
             }
 
@@ -97,6 +106,21 @@ internal static class JunitReport
             {
                 text.Append("case file: ").Append(detail.CaseFile).Append('\n');
                 text.Append("replay:    ").Append(detail.CaseReplay).Append('\n');
+            }
+        }
+
+        return text.ToString();
+    }
+
+    // The findings an invariant's failures belong to, by their number in the suite's findings list.
+    private static string FindingsOf(string id, IReadOnlyList<Finding> findings)
+    {
+        var text = new StringBuilder();
+        for (int i = 0; i < findings.Count; i++)
+        {
+            if (findings[i].Invariants.Contains(id, StringComparer.Ordinal))
+            {
+                text.Append($"finding:   F{i + 1} [{findings[i].Cause}] breaks {string.Join(", ", findings[i].Invariants)}\n");
             }
         }
 
