@@ -96,5 +96,16 @@ public sealed class DiffClassTests
         Assert.Contains(r.Classes, c => c.What.StartsWith("outside_cells: threw ", StringComparison.Ordinal));
     }
 
+    [Fact]
+    public void AnOutdoorWinsPortIsOneIndoorClassNamingTheKindsOfCell()
+    {
+        var port = PlantedFaults.Create("outdoor-wins");
+        var r = Check("DIFF-SCENE-WALK").Run(port, 300, Fixed);
+        Assert.True(r.Divergent > 0, "the scene walks must reach a building");
+        var only = Assert.Single(r.Classes);
+        Assert.Equal("static find_cell in a scene: containing a land cell, reference an env cell", only.What);
+        Assert.IsType<SceneWalk>(only.Example);
+    }
+
     private static DiffCheck Check(string id) => new DiffChecks(new ReferenceAdapter(PickPolicy.Retail)).All.Single(c => c.Id == id);
 }

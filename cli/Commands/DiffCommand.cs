@@ -3,6 +3,7 @@ using System.Diagnostics;
 using AcPhys.Cli.Diff;
 using AcPhys.Cli.Impl;
 using AcPhys.Spec.Adapters;
+using AcPhys.Spec.Invariants;
 using AcPhys.Spec.Running;
 using Spectre.Console;
 
@@ -21,7 +22,7 @@ internal static class DiffCommand
     {
         var impl = new ImplementationOptions();
         var cases = new Option<int?>("--cases") { Description = "Generated inputs per check (default 1,000).", HelpName = "N" };
-        var only = new Option<string>("--only") { Description = "Run one check: DIFF-LANDDEFS, DIFF-OUTSIDE-CELLS, DIFF-FIND-CELL, DIFF-WALK, DIFF-PARTS.", HelpName = "CHECK" };
+        var only = new Option<string>("--only") { Description = "Run one check: DIFF-LANDDEFS, DIFF-OUTSIDE-CELLS, DIFF-FIND-CELL, DIFF-WALK, DIFF-PARTS, DIFF-SCENE-WALK.", HelpName = "CHECK" };
         var seed = new Option<string>("--seed") { Description = "Use this seed (a divergence's replay seed reproduces it).", HelpName = "seed,gamma[,size]" };
         var output = new Option<string>("--output", "-o") { Description = "Folder for the divergence files (default artifacts/diff).", HelpName = "DIR" };
         var quiet = new Option<bool>("--quiet", "-q") { Description = "Print only divergences and the summary line." };
@@ -64,7 +65,7 @@ internal static class DiffCommand
         var (impl, owned) = choice.Open(quiet ? null : line => Console.Error.WriteLine("[impl] " + line));
         using (owned)
         {
-            var reference = new ReferenceAdapter(impl.Pick);
+            var reference = Conformance.ReferenceFor(impl); // the pick, indoor and outdoor fidelity the implementation declares
             var checks = new DiffChecks(reference).All;
             if (only is not null)
             {

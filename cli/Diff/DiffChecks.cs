@@ -1,6 +1,9 @@
 using AcPhys.Core;
 using AcPhys.Spec.Adapters;
 using AcPhys.Spec.Cases;
+using AcPhys.Spec.Dat;
+using AcPhys.Spec.Invariants;
+using AcPhys.Spec.Scenes;
 
 namespace AcPhys.Cli.Diff;
 
@@ -20,6 +23,7 @@ internal sealed class DiffChecks(ICellPhysics reference)
         new DiffCheck<OutdoorCase>("DIFF-FIND-CELL", "find_cell on open land gives the reference's cells and containing cell (no current cell).", Op.FindCell, OutdoorDomain.Instance, FindCell),
         new DiffCheck<Walk>("DIFF-WALK", "Along a generated walk, every step's find_cell answer (cells and containing cell, with the current cell carried) is the reference's.", Op.FindCell, WalkDomain.Instance, WalkCheck),
         new DiffCheck<PartsCase>("DIFF-PARTS", "outside_cells_parts gives the reference's cells in order.", Op.OutsideCellsParts, PartsDomain.Instance, Parts),
+        new DiffCheck<SceneWalk>("DIFF-SCENE-WALK", "Along a generated walk through a generated scene (buildings, portals, dungeons), every step's find_cell answer is the reference's, asked statically and, when offered, as a movement transition.", Op.FindCellScene, SceneDomain.Instance, SceneWalkCheck),
     ];
 
     private Divergence? Land(ICellPhysics impl, LandCase c)
@@ -109,6 +113,46 @@ internal sealed class DiffChecks(ICellPhysics reference)
             ? new Divergence("outside_cells_parts: " + shape, input, $"outside_cells_parts: implementation {Answers.Cells(mine)} | reference {Answers.Cells(theirs)}")
             : null;
     }
+
+    // Every step of the implementation's own walk is asked of the reference with the same cell, spheres and current cell
+    // (as FIND-CELL-CONFORMANCE does), in the scene as the implementation received it; a numerical tie (a probe a few
+    // ulps away answers like the implementation) is not a divergence, so a correct port in other float order is clean.
+    private Divergence? SceneWalkCheck(ICellPhysics impl, SceneWalk w)
+    {
+        var scene = SceneSent(impl, w);
+        string input = SceneDomain.Instance.Primary(w);
+        foreach (bool loadCells in (impl.Ops & Op.FindCellTransition) != 0 ? [false, true] : new[] { false })
+        {
+            string kind = loadCells ? "transition" : "static";
+            if (!Answers.TryAsk(() => SceneWalkRunner.Run(impl, w, loadCells), out var trace, out string? threw))
+            {
+                return new Divergence($"{kind} find_cell in a scene: {threw}", input, $"implementation {threw}");
+            }
+
+            for (int i = 0; i < trace.Count; i++)
+            {
+                var s = trace[i];
+                var current = i == 0 ? CellId.None : trace[i - 1].Current;
+                var want = reference.FindCell(scene, s.Query.Cell, s.Query.Spheres, current, loadCells);
+                if (SceneDelta.Of(s.Answer!, want, s.Query.Cell) is string shape
+                    && Conformance.Probes(s.Query.Spheres).All(p => SceneDelta.Of(s.Answer!, reference.FindCell(scene, s.Query.Cell, p, current, loadCells), s.Query.Cell) is not null))
+                {
+                    return new Divergence(
+                        $"{kind} find_cell in a scene: {shape}",
+                        input,
+                        $"step {i} ({kind}, from {s.Query.Cell}, current {current}): implementation {Answers.Cells(s.Answer!.Cells, s.Answer.Containing)} | reference {Answers.Cells(want.Cells, want.Containing)}");
+                }
+            }
+        }
+
+        return null;
+    }
+
+    /// <summary>Returns the scene as the implementation received it: read back from dat records when it takes them (float32 vertices).</summary>
+    /// <param name="impl">The implementation.</param>
+    /// <param name="w">The scene walk.</param>
+    /// <returns>The scene.</returns>
+    public static Scene SceneSent(ICellPhysics impl, SceneWalk w) => (impl.Ops & Op.DatRecords) != 0 ? DatRoundTrip.Of(w.Scene) : w.Scene;
 
     // Where along the reference's own walk the first divergence falls: what kind of step the reference took there.
     private static string StepKind(IReadOnlyList<WalkStep> theirs, int i)

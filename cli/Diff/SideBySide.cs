@@ -1,4 +1,5 @@
 using System.Text;
+using AcPhys.Core;
 using AcPhys.Spec.Adapters;
 using AcPhys.Spec.Cases;
 
@@ -57,6 +58,32 @@ internal static class SideBySide
                         $"step {x.Index}: find_cell({x.Frame}, ({Answers.Float(x.Position.X)}, {Answers.Float(x.Position.Y)}), current {(x.Index == 0 ? "none" : a[x.Index - 1].Current.ToString())})",
                         Answers.Cells(x.Cells, x.Containing),
                         Answers.Cells(y.Cells, y.Containing))).ToArray();
+                }
+
+            case SceneWalk sw:
+                {
+                    var scene = DiffChecks.SceneSent(impl, sw);
+                    var rows = new List<(string, string, string)>();
+                    foreach (bool loadCells in (impl.Ops & Op.FindCellTransition) != 0 ? [false, true] : new[] { false })
+                    {
+                        if (!Answers.TryAsk(() => SceneWalkRunner.Run(impl, sw, loadCells), out var trace, out string? threw))
+                        {
+                            rows.Add(("the walk", threw, string.Empty));
+                            continue;
+                        }
+
+                        foreach (var s in trace)
+                        {
+                            var current = s.Index == 0 ? CellId.None : trace[s.Index - 1].Current;
+                            var want = reference.FindCell(scene, s.Query.Cell, s.Query.Spheres, current, loadCells);
+                            rows.Add((
+                                $"step {s.Index} {(loadCells ? "transition" : "static")}: find_cell({s.Frame}, ({Answers.Float(s.Position.X)}, {Answers.Float(s.Position.Y)}, {Answers.Float(s.Position.Z)}), current {(current.IsNone ? "none" : current.ToString())})",
+                                Answers.Cells(s.Answer!.Cells, s.Answer.Containing),
+                                Answers.Cells(want.Cells, want.Containing)));
+                        }
+                    }
+
+                    return rows;
                 }
 
             case PartsCase parts:
