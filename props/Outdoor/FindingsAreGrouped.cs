@@ -52,6 +52,17 @@ public sealed class FindingsAreGrouped(ITestOutputHelper output)
         Assert.Equal(r.MoreFailures.Count, r.MoreFailures.Select(m => m.Class).Distinct().Count());
     }
 
+    [Fact(DisplayName = "FINDINGS: FIND-CELL-CONFORMANCE (walks of either kind) keeps searching after its first failure too, and names its class")]
+    public void WalkConformanceReportsMoreThanOneClass()
+    {
+        var walks = InvariantCatalogue.All.Single(i => i.Id == "FIND-CELL-CONFORMANCE");
+        var r = walks.Run(PlantedFaults.Create("clamp-106"), PropertyRun.Profile.CasesPerInvariant, PropertyRun.SeedFor(walks.Id));
+        output.WriteLine($"{r.Invariant.Id}: first class {r.FailureClass}; more: {string.Join("; ", r.MoreFailures.Select(m => m.Class))}");
+        Assert.Equal(ResultStatus.Failed, r.Status);
+        Assert.StartsWith("walk:", r.FailureClass, StringComparison.Ordinal); // a stored walk is classified, not "unclassified"
+        Assert.NotEmpty(r.MoreFailures);
+    }
+
     private static List<InvariantResult> Run(ICellPhysics impl) =>
         [.. Outdoor.Select(i => i.Run(impl, PropertyRun.Profile.CasesPerInvariant, PropertyRun.SeedFor(i.Id)))];
 

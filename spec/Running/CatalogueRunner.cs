@@ -26,7 +26,7 @@ public static class CatalogueRunner
     public static InvariantResult Run<TCase>(Invariant<TCase> invariant, ICellPhysics impl, int cases, Seed seed, Action<string>? sink = null)
     {
         var first = RunOnce(invariant, impl, cases, seed, [], sink);
-        if (first.Status != ResultStatus.Failed || first.Violation?.Case is not TCase shrunk)
+        if (first.Status != ResultStatus.Failed || Typed<TCase>(first.Violation?.Case) is not TCase shrunk)
         {
             return first;
         }
@@ -45,7 +45,7 @@ public static class CatalogueRunner
             var again = RunOnce(invariant, impl, cases - used, next, known, null);
             used += Math.Max(again.Cases, 1);
             elapsed += again.Elapsed;
-            if (again.Status != ResultStatus.Failed || again.Violation is not { Case: TCase c } v)
+            if (again.Status != ResultStatus.Failed || again.Violation is not { } v || Typed<TCase>(v.Case) is not TCase c)
             {
                 break;
             }
@@ -249,4 +249,14 @@ public static class CatalogueRunner
 
     // The case as reports and corpus files hold it: a walk of either kind is stored as the walk itself.
     private static object? Stored(object? c) => c is AnyWalk any ? any.Inner : c;
+
+    // The stored case back as the invariant's case type (a stored walk of either kind is an AnyWalk again), so an
+    // invariant over AnyWalk (FIND-CELL-CONFORMANCE) keeps searching for further failure classes as every other does.
+    private static object? Typed<TCase>(object? stored) => stored switch
+    {
+        TCase => stored,
+        Walk w when typeof(TCase) == typeof(AnyWalk) => new AnyWalk(w, null),
+        SceneWalk sw when typeof(TCase) == typeof(AnyWalk) => new AnyWalk(null, sw),
+        _ => null,
+    };
 }
