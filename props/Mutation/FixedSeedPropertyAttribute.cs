@@ -8,8 +8,8 @@ namespace AcPhys.Props.Mutation;
 /// <see cref="FixedSeed.Cases"/> cases in every profile, so the mutants it kills are the same on every run.
 /// </summary>
 /// <remarks>
-/// A failure prints FsCheck's own <c>Replay = "(seed,gamma)"</c> and the shrunk case; the seed is the one given here,
-/// so the failure reproduces as it is.
+/// A failure prints FsCheck's own <c>Falsifiable, after N tests (K shrinks) (seed,gamma)</c> with the original and
+/// shrunk case; the pair is this attribute's <see cref="PropertyAttribute.Replay"/>, so the failure reproduces as it is.
 /// </remarks>
 [AttributeUsage(AttributeTargets.Method, AllowMultiple = false)]
 public sealed class FixedSeedPropertyAttribute : PropertyAttribute
