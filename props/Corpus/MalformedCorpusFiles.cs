@@ -38,6 +38,7 @@ public sealed class MalformedCorpusFiles
         { Good.Replace("[1,2]", "[1,99999999999]", StringComparison.Ordinal), "$.case.lcoord[1]: expected a 32-bit integer" },
         { Good.Replace("\"kind\":\"land\",", "\"kind\":\"land\",\"kind\":\"walk\",", StringComparison.Ordinal), "$.kind: duplicate key \"kind\"" }, // once "$.walk: missing"
         { Good.Replace("\"x\":150", "\"x\":150,\"x\":151", StringComparison.Ordinal), "$.case.x: duplicate key \"x\"" }, // once the last won
+        { Good.Replace("\"title\":\"t\"", "\"\\ud800\":1,\"title\":\"t\"", StringComparison.Ordinal), "$.<name>: not valid text" }, // once InvalidOperationException from the duplicate-key search
         { Good.Replace("\"title\":\"t\"", "\"title\":\"" + new string('t', 5000) + "\"", StringComparison.Ordinal), "$.title: 5000 characters; at most 4096" }, // once echoed whole
     };
 
