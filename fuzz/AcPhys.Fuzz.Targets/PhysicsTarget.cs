@@ -73,9 +73,17 @@ public abstract class PhysicsTarget<TCase> : FuzzTarget
             return null;
         }
 
-        var impl = Implementations.For(fault);
+        // Every check gets a fresh implementation, as Classify and acphys replay do: a stateful fault (no-reset keeps
+        // the previous query's cells) must not carry one candidate's history into the next, or a case that failed a
+        // moment ago can pass when checked again.
         bool separates = fault is not null && Check(ReferenceAdapter.Instance, start) is null;
-        bool Fails(TCase c) => Check(impl, c)?.InvariantId == finding.Key && (!separates || Check(ReferenceAdapter.Instance, c) is null);
+        Violation? FailureOf(TCase c) =>
+            Check(Implementations.For(fault), c) is { } v && v.InvariantId == finding.Key && (!separates || Check(ReferenceAdapter.Instance, c) is null) ? v : null;
+
+        if (FailureOf(start) is not { } violation)
+        {
+            return null; // it does not fail the same way on a fresh implementation: kept as a raw input by triage
+        }
 
         var current = start;
         int budget = ShrinkBudget;
@@ -90,16 +98,15 @@ public abstract class PhysicsTarget<TCase> : FuzzTarget
                     break;
                 }
 
-                if (Fails(candidate))
+                if (FailureOf(candidate) is { } v)
                 {
-                    current = candidate;
+                    (current, violation) = (candidate, v);
                     progressed = true;
                     break;
                 }
             }
         }
 
-        var violation = Check(impl, current)!;
         var entry = CorpusEntry.From(current, $"{violation.InvariantId}: {violation.Message}", violation.InvariantId, "fuzz", origin)
             ?? throw new InvalidOperationException($"{typeof(TCase).Name} has no corpus format");
         return separates ? entry with { Catches = [fault!] } : entry;

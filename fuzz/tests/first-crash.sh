@@ -5,6 +5,8 @@
 #
 #   fuzz/tests/first-crash.sh [RUNS] [FAULT...]      (default 5 runs, every fault a target reaches)
 #   MINUTES=2 fuzz/tests/first-crash.sh 3 no-reframe  (cap each run at MINUTES of afl time; default 5)
+#   TIMEOUT_MS=5000 fuzz/tests/first-crash.sh 1 no-reframe  (afl-fuzz -t; default 1000: under a heavy load an
+#                                                  out-of-process target's first input, a dotnet start, can take longer)
 # Needs a build (./acphys fuzz ... once). Results go to .fuzz/first-crash/.
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
@@ -39,7 +41,7 @@ for fault in "${faults[@]}"; do
     for ((i = 1; i <= runs; i++)); do
         log=$out/$fault/run$i.txt
         mkdir -p "$out/$fault"
-        "$root/acphys" fuzz --target "$target" --fault "$fault" --minutes "$minutes" --until-crash --fresh --no-build --quiet \
+        "$root/acphys" fuzz --target "$target" --fault "$fault" --minutes "$minutes" --until-crash --fresh --no-build --quiet --timeout-ms "${TIMEOUT_MS:-1000}" \
             --campaign "$out/$fault/campaign$i" --regressions "$regs" >"$log" 2>&1 || true
         line=$(grep -m1 'time to first crash:' "$log" || echo "time to first crash: none")
         seeded=$(sed -n 's/.*found by \([0-9]*\) seed.*/\1/p' <<<"$line")
@@ -49,7 +51,7 @@ for fault in "${faults[@]}"; do
     done
     median_t=$(printf '%s\n' "${times[@]}" | sort -g | sed -n "$(((runs + 1) / 2))p")
     median_e=$(printf '%s\n' "${execs[@]}" | sort -g | sed -n "$(((runs + 1) / 2))p")
-    invariants=$(find "$regs" -name '*.json' 2>/dev/null | xargs -r -n1 basename | sed 's/-[0-9a-f]*\.json$//' | sort | uniq -c | awk '{printf "%s%s×%s", sep, $2, $1; sep=", "}')
+    invariants=$( (find "$regs" -name '*.json' 2>/dev/null || true) | xargs -r -n1 basename | sed 's/-[0-9a-f]*\.json$//' | sort | uniq -c | awk '{printf "%s%s×%s", sep, $2, $1; sep=", "}')
     good=0 total=0
     for f in "$regs"/*.json; do
         [[ -f $f ]] || continue

@@ -1,5 +1,6 @@
 using AcPhys.Core;
 using AcPhys.Core.Text;
+using AcPhys.Props.Support;
 using AcPhys.Spec.Running;
 using FsCheck;
 using FsCheck.Fluent;
@@ -9,20 +10,18 @@ namespace AcPhys.Props.Core;
 /// <summary>Equality, ordering and text laws of the core value types, as FsCheck properties with fixed seeds.</summary>
 public sealed class ValueTypeLaws
 {
-    private static readonly Config Config = Config.QuickThrowOnFailure.WithMaxTest(2000).WithReplay(0xC0FFEE, 0x9E3779B97F4A7C15UL | 1);
-
-    [Fact(DisplayName = "CellId: text round-trips through 0xAABBCCCC for every 32-bit pattern")]
-    public void CellId_RoundTripsThroughText() =>
-        Check.One(Config, Prop.ForAll(ArbMap.Default.ArbFor<uint>(), v =>
+    [CiProperty(MaxTest = 2000, DisplayName = "CellId: text round-trips through 0xAABBCCCC for every 32-bit pattern")]
+    public Property CellId_RoundTripsThroughText() =>
+        Prop.ForAll(ArbMap.Default.ArbFor<uint>(), v =>
         {
             var id = new CellId(v);
             string text = CellIdText.Format(id);
             return text.Length == 10 && CellIdText.TryParse(text, out var back) && back == id && CellIdText.TryParse(text.ToLowerInvariant(), out var lower) && lower == id;
-        }));
+        });
 
-    [Fact(DisplayName = "CellId: parts recompose to the id; equality, hash and ordering agree with the raw value")]
-    public void CellId_PartsAndOrdering() =>
-        Check.One(Config, Prop.ForAll(ArbMap.Default.ArbFor<uint>(), ArbMap.Default.ArbFor<uint>(), (a, b) =>
+    [CiProperty(MaxTest = 2000, DisplayName = "CellId: parts recompose to the id; equality, hash and ordering agree with the raw value")]
+    public Property CellId_PartsAndOrdering() =>
+        Prop.ForAll(ArbMap.Default.ArbFor<uint>(), ArbMap.Default.ArbFor<uint>(), (a, b) =>
         {
             var x = new CellId(a);
             var y = new CellId(b);
@@ -31,7 +30,7 @@ public sealed class ValueTypeLaws
                 && (x < y) == (a < b) && (x >= y) == (a >= b)
                 && x.CompareTo(y) == a.CompareTo(b)
                 && (x.Equals(y) == x.GetHashCode().Equals(y.GetHashCode()) || !x.Equals(y));
-        }));
+        });
 
     [Theory(DisplayName = "CellIdText: anything but 0x + 8 hex digits is refused without throwing")]
     [InlineData(null)]

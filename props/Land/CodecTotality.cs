@@ -1,3 +1,4 @@
+using AcPhys.Props.Support;
 using AcPhys.Spec.Cases;
 using AcPhys.Spec.Generators;
 using FsCheck;
@@ -8,25 +9,23 @@ namespace AcPhys.Props.Land;
 /// <summary>The fuzzer's byte codec: every byte string decodes, and encoded cases decode to themselves.</summary>
 public sealed class CodecTotality
 {
-    private static readonly Config Config = Config.QuickThrowOnFailure.WithMaxTest(3000).WithReplay(0xC0DEC, 0x9E3779B97F4A7C15UL | 1);
-
-    [Fact(DisplayName = "LandCaseCodec: any bytes decode without throwing, empty and oversized included")]
-    public void AnyBytesDecode() =>
-        Check.One(Config, Prop.ForAll(ArbMap.Default.ArbFor<byte[]>(), bytes =>
+    [CiProperty(MaxTest = 3000, DisplayName = "LandCaseCodec: any bytes decode without throwing, empty and oversized included")]
+    public Property AnyBytesDecode() =>
+        Prop.ForAll(ArbMap.Default.ArbFor<byte[]>(), bytes =>
         {
             _ = LandCaseCodec.Decode(bytes ?? []);
             return true;
-        }));
+        });
 
-    [Fact(DisplayName = "LandCaseCodec: Encode then Decode gives the case back bit for bit (NaN and -0 included)")]
-    public void EncodeDecodeRoundTrips() =>
-        Check.One(Config, Prop.ForAll(LandGens.Cases.Where(c => c.Lcoord.X is >= short.MinValue and <= short.MaxValue && c.Lcoord.Y is >= short.MinValue and <= short.MaxValue).ToArbitrary(), c =>
+    [CiProperty(MaxTest = 3000, DisplayName = "LandCaseCodec: Encode then Decode gives the case back bit for bit (NaN and -0 included)")]
+    public Property EncodeDecodeRoundTrips() =>
+        Prop.ForAll(LandGens.Cases.Where(c => c.Lcoord.X is >= short.MinValue and <= short.MaxValue && c.Lcoord.Y is >= short.MinValue and <= short.MaxValue).ToArbitrary(), c =>
         {
             var back = LandCaseCodec.Decode(LandCaseCodec.Encode(c));
             return back.Cell == c.Cell && back.Lcoord == c.Lcoord
                 && BitConverter.SingleToInt32Bits(back.X) == BitConverter.SingleToInt32Bits(c.X)
                 && BitConverter.SingleToInt32Bits(back.Y) == BitConverter.SingleToInt32Bits(c.Y);
-        }));
+        });
 
     [Fact(DisplayName = "LandCaseCodec: the line encoding reaches exact 24 m lines and their ULP neighbours")]
     public void LineEncodingReachesLines()

@@ -21,9 +21,9 @@ public sealed class BoxFrameProperties
         Assert.Equal(expected.OrderBy(Key), Enumerable.Range(0, 8).Select(box.Corner).OrderBy(Key));
     }
 
-    [Fact(DisplayName = "facts §5.8: a part's box in a target frame is the axis-aligned box around its 8 rotated corners, moved by 192 m per block of difference, in the target's local frame")]
-    public void InFrame_FoldsTheEightCarriedCorners() =>
-        Check.One(FixedSeed.Config(0x1D00_0020), Prop.ForAll(Cases.ToArbitrary(), t =>
+    [FixedSeedProperty(0x1D00_0020, DisplayName = "facts §5.8: a part's box in a target frame is the axis-aligned box around its 8 rotated corners, moved by 192 m per block of difference, in the target's local frame")]
+    public Property InFrame_FoldsTheEightCarriedCorners() =>
+        Prop.ForAll(Cases.ToArbitrary(), t =>
         {
             var (part, targetFrame) = t;
             var box = BoxSide.InFrame(part, Target, targetFrame);
@@ -42,7 +42,7 @@ public sealed class BoxFrameProperties
             bool neighbour = part.Cell.Landblock != Target.Landblock;
             return same.Label($"expected [{min}, {max}], got [{box.Min}, {box.Max}]")
                 .Classify(neighbour, "part in a neighbouring block").Classify(part.Frame.Rotation != Quaternion.Identity, "rotated part");
-        }));
+        });
 
     private static Gen<(Part Part, Frame TargetFrame)> Cases { get; } =
         from block in Gen.Elements(0xA9B4u, 0xA8B4u, 0xAAB4u, 0xA9B3u, 0xA9B5u, 0xAAB5u)

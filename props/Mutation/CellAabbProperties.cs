@@ -14,9 +14,9 @@ public sealed class CellAabbProperties
 {
     private const float Tol = 0.01f;
 
-    [Fact(DisplayName = "seed point_in_cell (ACME): a point is inside the AABB volume iff each coordinate lies in [min − 0.01, max + 0.01], ends included")]
-    public void PointInside_IsTheToleratedBox() =>
-        Check.One(FixedSeed.Config(0x1D00_0010), Prop.ForAll(PointCases.ToArbitrary(), t =>
+    [FixedSeedProperty(0x1D00_0010, DisplayName = "seed point_in_cell (ACME): a point is inside the AABB volume iff each coordinate lies in [min − 0.01, max + 0.01], ends included")]
+    public Property PointInside_IsTheToleratedBox() =>
+        Prop.ForAll(PointCases.ToArbitrary(), t =>
         {
             var (bounds, p) = t;
             static bool In(float v, float lo, float hi) => v >= lo - Tol && v <= hi + Tol;
@@ -25,11 +25,11 @@ public sealed class CellAabbProperties
                 .Any(a => a.Item1 == a.Item2 - Tol || a.Item1 == a.Item3 + Tol);
             return (new CellAabb(bounds).PointInside(p) == expected)
                 .Classify(expected, "inside").Classify(!expected, "outside").Classify(onEdge, "a coordinate exactly at the tolerance");
-        }));
+        });
 
-    [Fact(DisplayName = "seed point_in_cell (ACME): with R = r + 0.01, a sphere is Outside iff the box is farther than R from its centre, EntirelyInside iff the R-ball fits in the box on every axis (ends included), else PartiallyInside")]
-    public void SphereIntersects_IsTheToleratedBall() =>
-        Check.One(FixedSeed.Config(0x1D00_0011), Prop.ForAll(SphereCases.ToArbitrary(), t =>
+    [FixedSeedProperty(0x1D00_0011, DisplayName = "seed point_in_cell (ACME): with R = r + 0.01, a sphere is Outside iff the box is farther than R from its centre, EntirelyInside iff the R-ball fits in the box on every axis (ends included), else PartiallyInside")]
+    public Property SphereIntersects_IsTheToleratedBall() =>
+        Prop.ForAll(SphereCases.ToArbitrary(), t =>
         {
             var (bounds, sphere) = t;
             float r = sphere.Radius + Tol;
@@ -44,11 +44,11 @@ public sealed class CellAabbProperties
                 : BoundingType.PartiallyInside;
             bool touching = MathF.Max(gx, MathF.Max(gy, gz)) == r || new[] { c.X - r == bounds.Min.X, c.X + r == bounds.Max.X, c.Y - r == bounds.Min.Y, c.Z + r == bounds.Max.Z }.Any(b => b);
             return (new CellAabb(bounds).SphereIntersects(sphere) == expected).Collect(expected).Classify(touching, "touching at exactly R");
-        }));
+        });
 
-    [Fact(DisplayName = "facts §5.7, seed point_in_cell (ACME): the bounds of a cell volume (AABB or BSP) of several pieces are the per-axis min and max over every piece's bounds, whichever piece holds them")]
-    public void Bounds_AreTheUnionOfThePieces() =>
-        Check.One(FixedSeed.Config(0x1D00_0012), Prop.ForAll(PieceBoxes.ToArbitrary(), boxes =>
+    [FixedSeedProperty(0x1D00_0012, DisplayName = "facts §5.7, seed point_in_cell (ACME): the bounds of a cell volume (AABB or BSP) of several pieces are the per-axis min and max over every piece's bounds, whichever piece holds them")]
+    public Property Bounds_AreTheUnionOfThePieces() =>
+        Prop.ForAll(PieceBoxes.ToArbitrary(), boxes =>
         {
             var pieces = boxes.Select(b => ConvexPiece.FromBox(b.Min, b.Max)).ToArray();
             var min = pieces.Select(p => p.Bounds.Min).Aggregate(Vector3.Min);
@@ -57,7 +57,7 @@ public sealed class CellAabbProperties
             var bsp = new CellBsp(pieces).Bounds;
             bool firstHoldsAll = pieces[0].Bounds.Min == min && pieces[0].Bounds.Max == max;
             return (aabb.Min == min && aabb.Max == max && bsp.Min == min && bsp.Max == max).Collect($"{pieces.Length} pieces").Classify(!firstHoldsAll, "an extreme outside piece 0");
-        }));
+        });
 
     // Boxes on a half-metre grid, flat ones included where no piece is built from them.
     private static Gen<Box> GridBoxes { get; } = Boxes(0);

@@ -11,9 +11,9 @@ namespace AcPhys.Props.Mutation;
 /// </summary>
 public sealed class CellBspSphereProperties
 {
-    [Fact(DisplayName = "facts §5.7 (BN:219-240): a BSP chain ending in a leaf answers Outside iff some plane has d ≤ −R exactly, else PartiallyInside")]
-    public void SphereIntersects_IsOutsideIffSomePlaneIsAtLeastRBehind() =>
-        Check.One(FixedSeed.Config(0x1D00_0030), Prop.ForAll(Cases.ToArbitrary(), t =>
+    [FixedSeedProperty(0x1D00_0030, DisplayName = "facts §5.7 (BN:219-240): a BSP chain ending in a leaf answers Outside iff some plane has d ≤ −R exactly, else PartiallyInside")]
+    public Property SphereIntersects_IsOutsideIffSomePlaneIsAtLeastRBehind() =>
+        Prop.ForAll(Cases.ToArbitrary(), t =>
         {
             var (box, radius) = t;
             float r = radius + 0.01f;
@@ -23,7 +23,7 @@ public sealed class CellBspSphereProperties
             var expected = d.Any(x => x <= -r) ? BoundingType.Outside : BoundingType.PartiallyInside;
             var actual = new CellBsp([ConvexPiece.FromBox(box.Min, box.Max)]).SphereIntersects(new Sphere(Vector3.Zero, radius));
             return (actual == expected).Collect(expected).Classify(d.Any(x => x == -r), "a face exactly R behind the centre");
-        }));
+        });
 
     // Faces at exactly ±R, one ULP either side, or well clear; each axis keeps max − min ≥ 5 mm (thinner pieces are
     // refused as bounding no volume).

@@ -12,9 +12,9 @@ namespace AcPhys.Props.Mutation;
 /// </summary>
 public sealed class CellIdTextMutationTests
 {
-    [Fact(DisplayName = "facts §1.1 notation: 0x or 0X plus eight hex digits of either case parse to the raw value; any other two-character prefix is refused")]
-    public void CellIdText_OnlyTheHexPrefixParses() =>
-        Check.One(FixedSeed.Config(0x7E47_0001), Prop.ForAll(FixedSeed.Zip(FixedSeed.Uints, Prefixes, Gen.Elements(true, false)).ToArbitrary(), t =>
+    [FixedSeedProperty(0x7E47_0001, DisplayName = "facts §1.1 notation: 0x or 0X plus eight hex digits of either case parse to the raw value; any other two-character prefix is refused")]
+    public Property CellIdText_OnlyTheHexPrefixParses() =>
+        Prop.ForAll(FixedSeed.Zip(FixedSeed.Uints, Prefixes, Gen.Elements(true, false)).ToArbitrary(), t =>
         {
             var (v, prefix, lower) = t;
             string digits = v.ToString("X8", CultureInfo.InvariantCulture);
@@ -22,16 +22,16 @@ public sealed class CellIdTextMutationTests
             bool accepted = prefix is "0x" or "0X";
             bool ok = CellIdText.TryParse(text, out var id);
             return ok == accepted && id == (accepted ? new CellId(v) : CellId.None);
-        }));
+        });
 
-    [Fact(DisplayName = "facts §1.1 notation: Format writes 0x then eight upper-case hex digits, and TryParse reads it back")]
-    public void CellIdText_FormatIsPrefixAndEightUpperHexDigits() =>
-        Check.One(FixedSeed.Config(0x7E47_0002), Prop.ForAll(FixedSeed.Uints.ToArbitrary(), v =>
+    [FixedSeedProperty(0x7E47_0002, DisplayName = "facts §1.1 notation: Format writes 0x then eight upper-case hex digits, and TryParse reads it back")]
+    public Property CellIdText_FormatIsPrefixAndEightUpperHexDigits() =>
+        Prop.ForAll(FixedSeed.Uints.ToArbitrary(), v =>
         {
             string text = CellIdText.Format(new CellId(v));
             return text == "0x" + v.ToString("X8", CultureInfo.InvariantCulture)
                 && CellIdText.TryParse(text, out var back) && back.Value == v;
-        }));
+        });
 
     [Theory(DisplayName = "facts §1.1 notation: a ten-character text with a bad first or second character is refused")]
     [InlineData("1xA9B40031")] // first character wrong, second right

@@ -18,9 +18,9 @@ public sealed class ConvexPieceProperties
     private const float H = 0.6f;
     private const float Eps = 0.75e-6f; // tent taper: inside (1e-6 / 2, 1e-6) and below H·1e-6, so only w itself recedes
 
-    [Fact(DisplayName = "facts §5.7: a box's corners are exactly its 8 corners and its bounds are min..max, whether or not it contains the local origin")]
-    public void Box_CornersAreExactlyTheEightCorners() =>
-        Check.One(FixedSeed.Config(0x1D00_0040), Prop.ForAll(Boxes.ToArbitrary(), b =>
+    [FixedSeedProperty(0x1D00_0040, DisplayName = "facts §5.7: a box's corners are exactly its 8 corners and its bounds are min..max, whether or not it contains the local origin")]
+    public Property Box_CornersAreExactlyTheEightCorners() =>
+        Prop.ForAll(Boxes.ToArbitrary(), b =>
         {
             var (min, max) = b;
             var piece = ConvexPiece.FromBox(min, max);
@@ -29,21 +29,21 @@ public sealed class ConvexPieceProperties
             bool bounds = piece.Bounds.Min == min && piece.Bounds.Max == max;
             bool originInside = Vector3.Min(min, Vector3.Zero) == min && Vector3.Max(max, Vector3.Zero) == max && !corners.Any(c => c.X == 0 || c.Y == 0 || c.Z == 0);
             return (exact && bounds).Classify(originInside, "origin strictly inside");
-        }));
+        });
 
-    [Fact(DisplayName = "facts §5.7: containment is closed: a point exactly on a face, edge or corner is inside, one float step beyond it is outside")]
-    public void Contains_IsClosed() =>
-        Check.One(FixedSeed.Config(0x1D00_0041), Prop.ForAll(Probes.ToArbitrary(), t =>
+    [FixedSeedProperty(0x1D00_0041, DisplayName = "facts §5.7: containment is closed: a point exactly on a face, edge or corner is inside, one float step beyond it is outside")]
+    public Property Contains_IsClosed() =>
+        Prop.ForAll(Probes.ToArbitrary(), t =>
         {
             var (min, max, p) = t;
             bool expected = Vector3.Clamp(p, min, max) == p;
             bool onBoundary = expected && (p.X == min.X || p.X == max.X || p.Y == min.Y || p.Y == max.Y || p.Z == min.Z || p.Z == max.Z);
             return (ConvexPiece.FromBox(min, max).Contains(p) == expected).Classify(onBoundary, "on the boundary").Classify(!expected, "one step outside or beyond");
-        }));
+        });
 
-    [Fact(DisplayName = "facts §5.7: a box with one corner cut off by a plane has the 7 remaining corners and the 3 cut points as corners, and not the cut-off corner")]
-    public void CutBox_HasTenCornersAndNotTheCutOne() =>
-        Check.One(FixedSeed.Config(0x1D00_0042), Prop.ForAll(CutBoxes.ToArbitrary(), t =>
+    [FixedSeedProperty(0x1D00_0042, DisplayName = "facts §5.7: a box with one corner cut off by a plane has the 7 remaining corners and the 3 cut points as corners, and not the cut-off corner")]
+    public Property CutBox_HasTenCornersAndNotTheCutOne() =>
+        Prop.ForAll(CutBoxes.ToArbitrary(), t =>
         {
             var (min, max, corner, cut) = t;
             var box = ConvexPiece.FromBox(min, max).Planes;
@@ -61,11 +61,11 @@ public sealed class ConvexPieceProperties
             var expected = Corners(min, max).Where(c => c != corner).Concat(points).ToArray();
             bool matched = expected.All(e => piece.Vertices.Any(v => Vector3.Distance(v, e) < 1e-4f));
             return (piece.Vertices.Count == expected.Length && matched).Collect(piece.Vertices.Count);
-        }));
+        });
 
-    [Fact(DisplayName = "facts §5.7: a tetrahedron (four planes through the faces of four points) is accepted and its corners are the four points")]
-    public void Tetrahedron_CornersAreItsFourPoints() =>
-        Check.One(FixedSeed.Config(0x1D00_0043), Prop.ForAll(Tetrahedra.ToArbitrary(), p =>
+    [FixedSeedProperty(0x1D00_0043, DisplayName = "facts §5.7: a tetrahedron (four planes through the faces of four points) is accepted and its corners are the four points")]
+    public Property Tetrahedron_CornersAreItsFourPoints() =>
+        Prop.ForAll(Tetrahedra.ToArbitrary(), p =>
         {
             var planes = new[] { (0, 1, 2, 3), (0, 1, 3, 2), (0, 2, 3, 1), (1, 2, 3, 0) }.Select(f =>
             {
@@ -80,11 +80,11 @@ public sealed class ConvexPieceProperties
             bool bounds = Vector3.Distance(piece.Bounds.Min, min) < 1e-3f && Vector3.Distance(piece.Bounds.Max, max) < 1e-3f;
             float det = Vector3.Dot(piece.Planes[0].Normal, Vector3.Cross(piece.Planes[1].Normal, piece.Planes[2].Normal));
             return (corners && bounds).Classify(MathF.Abs(MathF.Abs(det) - 1) > 1e-3f, "a corner's planes not orthonormal");
-        }));
+        });
 
-    [Fact(DisplayName = "facts §5.7: a corner up to 1e-3 (inclusive) behind another plane is kept: a box [0,s]³ cut by x ≥ δ keeps its x = 0 corners iff δ ≤ 1e-3")]
-    public void Corner_UpTo1e3BehindAPlaneIsKept() =>
-        Check.One(FixedSeed.Config(0x1D00_0044), Prop.ForAll(Gen.Zip(Gen.Choose(1, 9), Gen.Elements(1e-3f, MathF.BitDecrement(1e-3f), MathF.BitIncrement(1e-3f), 5e-4f, 2e-3f, 0.25f)).ToArbitrary(), t =>
+    [FixedSeedProperty(0x1D00_0044, DisplayName = "facts §5.7: a corner up to 1e-3 (inclusive) behind another plane is kept: a box [0,s]³ cut by x ≥ δ keeps its x = 0 corners iff δ ≤ 1e-3")]
+    public Property Corner_UpTo1e3BehindAPlaneIsKept() =>
+        Prop.ForAll(Gen.Zip(Gen.Choose(1, 9), Gen.Elements(1e-3f, MathF.BitDecrement(1e-3f), MathF.BitIncrement(1e-3f), 5e-4f, 2e-3f, 0.25f)).ToArbitrary(), t =>
         {
             var (size, delta) = t;
             var box = ConvexPiece.FromBox(Vector3.Zero, new Vector3(size)).Planes;
@@ -92,7 +92,7 @@ public sealed class ConvexPieceProperties
             bool kept = delta <= 1e-3f;
             bool corner = piece.Vertices.Contains(Vector3.Zero) == kept;
             return (corner && piece.Bounds.Min.X == (kept ? 0 : delta)).Classify(delta == 1e-3f, "exactly 1e-3 behind");
-        }));
+        });
 
     [Fact(DisplayName = "facts §5.7: two corners exactly 1e-4 apart (squared distance 1e-8 in float) are both kept; only closer ones merge")]
     public void Corners_ExactlyAtTheMergeDistanceAreBothKept()
@@ -133,14 +133,14 @@ public sealed class ConvexPieceProperties
         Assert.Equal(10, piece.Vertices.Count);
     }
 
-    [Fact(DisplayName = "facts §5.7: a prism over the unit square whose tilted end leaves it open along ±z bounds no finite volume, whatever the plane order")]
-    public void TiltedPrism_OpenAlongZ_IsRejected() =>
-        Check.One(FixedSeed.Config(0x1D00_0045), Prop.ForAll(OpenPrisms.ToArbitrary(), t =>
+    [FixedSeedProperty(0x1D00_0045, DisplayName = "facts §5.7: a prism over the unit square whose tilted end leaves it open along ±z bounds no finite volume, whatever the plane order")]
+    public Property TiltedPrism_OpenAlongZ_IsRejected() =>
+        Prop.ForAll(OpenPrisms.ToArbitrary(), t =>
         {
             var (planes, up) = t;
             var message = Assert.Throws<ArgumentException>(() => new ConvexPiece(planes)).Message;
             return message.Contains("bound no finite volume", StringComparison.Ordinal).Classify(up, "open towards +z").Classify(!up, "open towards −z");
-        }));
+        });
 
     [Fact(DisplayName = "facts §5.7: a direction recedes iff every plane has N·u ≥ −1e-6 (inclusive): a wedge whose roof tapers by exactly 1e-6 is rejected, by one float more is accepted")]
     public void Wedge_TaperingByExactly1e6_IsUnbounded()
@@ -194,9 +194,9 @@ public sealed class ConvexPieceProperties
         Assert.Contains("bound no finite volume", Assert.Throws<ArgumentException>(() => new ConvexPiece(Rotated(above))).Message);
     }
 
-    [Fact(DisplayName = "facts §5.7: a yawed box up to 5.6 km from the local origin has exactly its 8 corners, each found once (a corner met by a reordered plane triple is no new corner)")]
-    public void FarYawedBox_HasEachCornerOnce() =>
-        Check.One(FixedSeed.Config(0x1D00_0046), Prop.ForAll(FarYawedBoxes.ToArbitrary(), t =>
+    [FixedSeedProperty(0x1D00_0046, DisplayName = "facts §5.7: a yawed box up to 5.6 km from the local origin has exactly its 8 corners, each found once (a corner met by a reordered plane triple is no new corner)")]
+    public Property FarYawedBox_HasEachCornerOnce() =>
+        Prop.ForAll(FarYawedBoxes.ToArbitrary(), t =>
         {
             var (centre, half, yaw) = t;
             var rotation = Quaternion.CreateFromAxisAngle(Vector3.UnitZ, yaw);
@@ -210,11 +210,11 @@ public sealed class ConvexPieceProperties
             float tolerance = 1e-6f * centre.Length() * 8 + 1e-3f; // a few float steps at this distance
             bool each = corners.All(c => piece.Vertices.Count(v => Vector3.Distance(v, c) < tolerance) == 1);
             return (piece.Vertices.Count == 8 && each).Label($"{piece.Vertices.Count} corners").Classify(centre.Length() > 1024, "over 1 km out (float steps over 1e-4)");
-        }));
+        });
 
-    [Fact(DisplayName = "facts §5.7: a thin tilted wedge (a roof rising by m·y over a floor, m = 0.03–0.3) has 6 corners, each found once, though its sharp edge's corners come from ill-conditioned plane triples")]
-    public void ThinWedge_HasEachCornerOnce() =>
-        Check.One(FixedSeed.Config(0x1D00_0047), Prop.ForAll(ThinWedges.ToArbitrary(), t =>
+    [FixedSeedProperty(0x1D00_0047, DisplayName = "facts §5.7: a thin tilted wedge (a roof rising by m·y over a floor, m = 0.03–0.3) has 6 corners, each found once, though its sharp edge's corners come from ill-conditioned plane triples")]
+    public Property ThinWedge_HasEachCornerOnce() =>
+        Prop.ForAll(ThinWedges.ToArbitrary(), t =>
         {
             var (at, length, width, slope, turn) = t;
             var rotation = Quaternion.CreateFromAxisAngle(Vector3.Normalize(new Vector3(0.3f, 0.5f, 0.8f)), turn);
@@ -238,7 +238,7 @@ public sealed class ConvexPieceProperties
             bool Near(Vector3 v, Vector3 c) => MathF.Abs(v.X - c.X) < 0.05f && MathF.Abs(v.Y - c.Y) < 0.05f && MathF.Abs(v.Z - c.Z) < thickness / 3;
             bool each = corners.All(c => local.Count(v => Near(v, c)) == 1);
             return (piece.Vertices.Count == 6 && each).Label($"{piece.Vertices.Count} corners: {string.Join(" ", local)}").Collect(slope);
-        }));
+        });
 
     // Thin wedges 2–20 m long and wide, tilted, their sharp edge anywhere within 100 m of the local origin. Slopes
     // below ~0.01 lose a sharp-edge corner (its error, about |D|·ulp / m, passes the 1e-3 tolerance): docs/indoor.md.

@@ -12,9 +12,9 @@ namespace AcPhys.Props.Mutation;
 /// </summary>
 public sealed class DoubleMutationTests
 {
-    [Fact(DisplayName = "facts §4: on exact points, the double pick equals the float32 pick under both policies, current-first included")]
-    public void PickOutdoorDouble_EqualsFloatOnExactPoints() =>
-        Check.One(FixedSeed.Config(0xD0B1_0001), Prop.ForAll(PickCases.ToArbitrary(), c =>
+    [FixedSeedProperty(0xD0B1_0001, DisplayName = "facts §4: on exact points, the double pick equals the float32 pick under both policies, current-first included")]
+    public Property PickOutdoorDouble_EqualsFloatOnExactPoints() =>
+        Prop.ForAll(PickCases.ToArbitrary(), c =>
         {
             var array = new CellArray();
             OutdoorCells.AddAllOutsideCells(array, c.Position, Vector3.Zero, [new Sphere(c.Center, c.Radius)], c.Land);
@@ -24,11 +24,11 @@ public sealed class DoubleMutationTests
             bool ok = ContainingCell.PickOutdoorDouble(array, c.Position, c.Center, PickPolicy.Retail, current) == retail
                 && ContainingCell.PickOutdoorDouble(array, c.Position, c.Center, PickPolicy.CurrentFirst, current) == first;
             return ok.Classify(first != retail, "current-first decides").Classify(retail.IsNone, "no pick");
-        }));
+        });
 
-    [Fact(DisplayName = "facts §3.1 (no spheres): on exact origins, the double mode adds the same single origin cell as float32, or nothing off the map")]
-    public void NoSphereOrigin_DoubleEqualsFloat() =>
-        Check.One(FixedSeed.Config(0xD0B1_0002), Prop.ForAll(PickCases.ToArbitrary(), c =>
+    [FixedSeedProperty(0xD0B1_0002, DisplayName = "facts §3.1 (no spheres): on exact origins, the double mode adds the same single origin cell as float32, or nothing off the map")]
+    public Property NoSphereOrigin_DoubleEqualsFloat() =>
+        Prop.ForAll(PickCases.ToArbitrary(), c =>
         {
             var single = new CellArray();
             var exact = new CellArray();
@@ -42,11 +42,11 @@ public sealed class DoubleMutationTests
 
             bool same = single.ToIdArray().SequenceEqual(exact.ToIdArray()) && Loaded(single).SequenceEqual(Loaded(exact));
             return same.Classify(exact.Count == 0, "off the map or dropped");
-        }));
+        });
 
-    [Fact(DisplayName = "facts §2.1 step 1: for an out-of-range low word the double re-seat fails as float32 does: None, and the point untouched (not EPS-snapped)")]
-    public void AdjustToOutsideInDouble_OutOfRangeLeavesThePoint() =>
-        Check.One(FixedSeed.Config(0xD0B1_0003), Prop.ForAll(FixedSeed.Zip(OutOfRangeIds, Tiny, Tiny).ToArbitrary(), t =>
+    [FixedSeedProperty(0xD0B1_0003, DisplayName = "facts §2.1 step 1: for an out-of-range low word the double re-seat fails as float32 does: None, and the point untouched (not EPS-snapped)")]
+    public Property AdjustToOutsideInDouble_OutOfRangeLeavesThePoint() =>
+        Prop.ForAll(FixedSeed.Zip(OutOfRangeIds, Tiny, Tiny).ToArbitrary(), t =>
         {
             var (id, x, y) = t;
             var fid = id;
@@ -56,11 +56,11 @@ public sealed class DoubleMutationTests
             double dx = x, dy = y;
             bool doubleOk = LandDefs.AdjustToOutsideInDouble(ref did, ref dx, ref dy);
             return !floatOk && !doubleOk && did == CellId.None && fid == CellId.None && dx == x && dy == y && fx == x && fy == y;
-        }));
+        });
 
-    [Fact(DisplayName = "facts §2.1 step 4: the double re-seat names the float32 re-seat's cell and re-bases each axis exactly, v − 192·(block step), into [0, 192)")]
-    public void AdjustToOutsideInDouble_RebasesEachAxisExactly() =>
-        Check.One(FixedSeed.Config(0xD0B1_0004), Prop.ForAll(PickCases.ToArbitrary(), c =>
+    [FixedSeedProperty(0xD0B1_0004, DisplayName = "facts §2.1 step 4: the double re-seat names the float32 re-seat's cell and re-bases each axis exactly, v − 192·(block step), into [0, 192)")]
+    public Property AdjustToOutsideInDouble_RebasesEachAxisExactly() =>
+        Prop.ForAll(PickCases.ToArbitrary(), c =>
         {
             CellId single = c.Position, exact = c.Position;
             float fx = c.Center.X, fy = c.Center.Y;
@@ -78,7 +78,7 @@ public sealed class DoubleMutationTests
             bool rebased = !ok || (dx == ex && dy == ey && dx >= 0 && dx < 192 && dy >= 0 && dy < 192);
             return rebased.Label($"{c.Position} {c.Center} → {exact} ({dx}, {dy}), expected ({ex}, {ey})")
                 .Classify(ok && exact.Landblock != c.Position.Landblock, "moved to another block").Classify(!ok, "off the map");
-        }));
+        });
 
     // Positions anywhere on the map (edges often), centres on a 1/4 m grid around the block (24 m lines often),
     // radii up to two cells, a current cell drawn from the array, and a landscape with some blocks unloaded.

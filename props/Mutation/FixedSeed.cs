@@ -6,6 +6,7 @@ namespace AcPhys.Props.Mutation;
 /// <summary>
 /// FsCheck settings of the mutation-killing properties: a fixed seed per property and a fixed number of cases in
 /// every profile, so the set of mutants a property kills is the same on every run and every machine (never luck).
+/// The properties are FsCheck.Xunit tests carrying them through <see cref="FixedSeedPropertyAttribute"/>.
 /// </summary>
 internal static class FixedSeed
 {
@@ -14,11 +15,6 @@ internal static class FixedSeed
 
     /// <summary>The gamma of every seed (odd, as FsCheck requires).</summary>
     public const ulong Gamma = 0x9E3779B97F4A7C15UL;
-
-    /// <summary>Returns a throwing config that replays <paramref name="seed"/> for <see cref="Cases"/> cases.</summary>
-    /// <param name="seed">The property's own seed.</param>
-    /// <returns>The config.</returns>
-    public static Config Config(ulong seed) => FsCheck.Config.QuickThrowOnFailure.WithMaxTest(Cases).WithReplay(seed, Gamma);
 
     /// <summary>Gets bytes biased to the map edge: 0x00, 0x01, 0x7F, 0x80, 0xFD, 0xFE, 0xFF, else any byte.</summary>
     public static Gen<byte> Bytes { get; } = Gen.Frequency(

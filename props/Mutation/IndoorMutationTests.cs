@@ -67,9 +67,9 @@ public sealed class IndoorMutationTests
         Assert.True(new CellPlane(new Vector3(MathF.BitIncrement(x), 0, 0), 0).IsValid);
     }
 
-    [Fact(DisplayName = "facts §5.7: a piece normalises its planes: scaling a plane's (N, D) by k > 0 leaves the planes, corners, bounds and containment unchanged")]
-    public void ConvexPiece_NormalisesItsPlanes() =>
-        Check.One(FixedSeed.Config(0x1D00_0003), Prop.ForAll(ScaledPieces.ToArbitrary(), t =>
+    [FixedSeedProperty(0x1D00_0003, DisplayName = "facts §5.7: a piece normalises its planes: scaling a plane's (N, D) by k > 0 leaves the planes, corners, bounds and containment unchanged")]
+    public Property ConvexPiece_NormalisesItsPlanes() =>
+        Prop.ForAll(ScaledPieces.ToArbitrary(), t =>
         {
             var (unit, scales, probe) = t;
             var scaled = new ConvexPiece(unit.Select((p, i) => new CellPlane(p.Normal * scales[i], p.D * scales[i])).ToArray());
@@ -78,7 +78,7 @@ public sealed class IndoorMutationTests
             bool bounds = Vector3.Distance(scaled.Bounds.Min, reference.Bounds.Min) < 1e-3f && Vector3.Distance(scaled.Bounds.Max, reference.Bounds.Max) < 1e-3f;
             bool inside = reference.Contains(probe);
             return (planes && bounds && scaled.Vertices.Count == reference.Vertices.Count && scaled.Contains(probe) == inside).Classify(inside, "probe inside");
-        }));
+        });
 
     [Fact(DisplayName = "facts §5.7: a cell volume (BSP or AABB) needs at least one piece; an env cell needs an env cell id")]
     public void CellVolumes_RejectNoPieces()
@@ -108,9 +108,9 @@ public sealed class IndoorMutationTests
         Assert.Equal(2, apart.Buildings.Count);
     }
 
-    [Fact(DisplayName = "seed point_in_cell (ACME): the AABB volume's box test is interval overlap on each axis with the 0.01 tolerance, inclusive at the tolerance")]
-    public void CellAabb_BoxIntersectsIsToleratedOverlap() =>
-        Check.One(FixedSeed.Config(0x1D00_0001), Prop.ForAll(AabbCases.ToArbitrary(), t =>
+    [FixedSeedProperty(0x1D00_0001, DisplayName = "seed point_in_cell (ACME): the AABB volume's box test is interval overlap on each axis with the 0.01 tolerance, inclusive at the tolerance")]
+    public Property CellAabb_BoxIntersectsIsToleratedOverlap() =>
+        Prop.ForAll(AabbCases.ToArbitrary(), t =>
         {
             var (bounds, query) = t;
             const float tol = 0.01f;
@@ -120,11 +120,11 @@ public sealed class IndoorMutationTests
                 && Overlap(query.Min.Z, query.Max.Z, bounds.Min.Z, bounds.Max.Z);
             bool actual = new CellAabb(bounds).BoxIntersects(query);
             return (actual == expected).Classify(expected, "overlapping").Classify(!expected, "apart");
-        }));
+        });
 
-    [Fact(DisplayName = "facts §5.7 (PE:49-72): intersect_box is the common side of all eight corners (biased by +EPS) when d(Min) is outside ±EPS; any corner in the plane or across makes it Crossing")]
-    public void IntersectBox_MatchesTheCornerDefinition() =>
-        Check.One(FixedSeed.Config(0x1D00_0002), Prop.ForAll(SideCases.ToArbitrary(), t =>
+    [FixedSeedProperty(0x1D00_0002, DisplayName = "facts §5.7 (PE:49-72): intersect_box is the common side of all eight corners (biased by +EPS) when d(Min) is outside ±EPS; any corner in the plane or across makes it Crossing")]
+    public Property IntersectBox_MatchesTheCornerDefinition() =>
+        Prop.ForAll(SideCases.ToArbitrary(), t =>
         {
             var (plane, box) = t;
             const float eps = LandDefs.Epsilon;
@@ -136,7 +136,7 @@ public sealed class IndoorMutationTests
                 : Sidedness.Crossing;
             bool closeCorner = corners.Any(d => d >= -eps && d <= eps);
             return (BoxSide.Of(plane, box) == expected).Collect(expected).Classify(closeCorner, "a corner within EPS");
-        }));
+        });
 
     [Fact(DisplayName = "facts §7 #6–#13: IndoorFidelity.Ace switches on every documented ACE difference and nothing that is not ACE's (ReframeTransit)")]
     public void IndoorFidelity_AcePreset()

@@ -12,20 +12,20 @@ namespace AcPhys.Props.Mutation;
 /// </summary>
 public sealed class LandDefsMutationTests
 {
-    [Fact(DisplayName = "facts §2 in_bounds: (x, y) is on the map exactly when 0 <= x < 2040 and 0 <= y < 2040, each axis on its own")]
-    public void InBounds_IsTheHalfOpenSquareOnEachAxis() =>
-        Check.One(FixedSeed.Config(0x1A4D_0001), Prop.ForAll(Gen.Zip(EdgeInts, EdgeInts).ToArbitrary(), t =>
+    [FixedSeedProperty(0x1A4D_0001, DisplayName = "facts §2 in_bounds: (x, y) is on the map exactly when 0 <= x < 2040 and 0 <= y < 2040, each axis on its own")]
+    public Property InBounds_IsTheHalfOpenSquareOnEachAxis() =>
+        Prop.ForAll(Gen.Zip(EdgeInts, EdgeInts).ToArbitrary(), t =>
         {
             var (x, y) = t;
             bool expected = x >= 0 && x < 2040 && y >= 0 && y < 2040;
             return LandDefs.InBounds(x, y) == expected
                 && new Lcoord(x, y).IsOnMap == expected
                 && LandDefs.LcoordToGid(x, y).IsNone == !expected;
-        }));
+        });
 
-    [Fact(DisplayName = "facts §2 lcoord_to_gid: 0 off the map, else block (x>>3, y>>3) and low word 1 + 8·(x&7) + (y&7), at both map edges")]
-    public void LcoordToGid_IsTheDocumentedBitsAtTheEdges() =>
-        Check.One(FixedSeed.Config(0x1A4D_0002), Prop.ForAll(Gen.Zip(EdgeInts, EdgeInts).ToArbitrary(), t =>
+    [FixedSeedProperty(0x1A4D_0002, DisplayName = "facts §2 lcoord_to_gid: 0 off the map, else block (x>>3, y>>3) and low word 1 + 8·(x&7) + (y&7), at both map edges")]
+    public Property LcoordToGid_IsTheDocumentedBitsAtTheEdges() =>
+        Prop.ForAll(Gen.Zip(EdgeInts, EdgeInts).ToArbitrary(), t =>
         {
             var (x, y) = t;
             var id = LandDefs.LcoordToGid(x, y);
@@ -36,11 +36,11 @@ public sealed class LandDefsMutationTests
 
             return id.BlockX == x >> 3 && id.BlockY == y >> 3 && id.Low == 1 + (8 * (x & 7)) + (y & 7)
                 && LandDefs.GidToLcoord(id, out var back) && back == new Lcoord(x, y);
-        }));
+        });
 
-    [Fact(DisplayName = "facts §2 GetBlockOffset: 192·(Δbx, Δby, 0) for any two ids, zero exactly for the same high word; retail validates nothing (0xFF bytes count)")]
-    public void GetBlockOffset_IsTheBlockStepForAnyBytes() =>
-        Check.One(FixedSeed.Config(0x1A4D_0003), Prop.ForAll(Gen.Zip(AnyIds, AnyIds).ToArbitrary(), t =>
+    [FixedSeedProperty(0x1A4D_0003, DisplayName = "facts §2 GetBlockOffset: 192·(Δbx, Δby, 0) for any two ids, zero exactly for the same high word; retail validates nothing (0xFF bytes count)")]
+    public Property GetBlockOffset_IsTheBlockStepForAnyBytes() =>
+        Prop.ForAll(Gen.Zip(AnyIds, AnyIds).ToArbitrary(), t =>
         {
             var (from, to) = t;
             var offset = LandDefs.GetBlockOffset(from, to);
@@ -48,18 +48,18 @@ public sealed class LandDefsMutationTests
             bool sameBlock = from.Landblock == to.Landblock;
             return offset == expected && (offset == Vector3.Zero) == sameBlock
                 && LandDefs.GetBlockOffset(to, from) == -expected;
-        }));
+        });
 
-    [Fact(DisplayName = "facts §2 InBlock: false if x < r or y < r, else x < 192 - r and y < 192 - r (lower bound inclusive, upper strict, each axis)")]
-    public void InBlock_BoundsAreInclusiveBelowStrictAboveOnEachAxis() =>
-        Check.One(FixedSeed.Config(0x1A4D_0004), Prop.ForAll(Gen.Zip(Radii, Gen.Zip(EdgeChoices, EdgeChoices)).ToArbitrary(), t =>
+    [FixedSeedProperty(0x1A4D_0004, DisplayName = "facts §2 InBlock: false if x < r or y < r, else x < 192 - r and y < 192 - r (lower bound inclusive, upper strict, each axis)")]
+    public Property InBlock_BoundsAreInclusiveBelowStrictAboveOnEachAxis() =>
+        Prop.ForAll(Gen.Zip(Radii, Gen.Zip(EdgeChoices, EdgeChoices)).ToArbitrary(), t =>
         {
             var (r, (cx, cy)) = t;
             float x = Place(cx, r);
             float y = Place(cy, r);
             bool expected = !(x < r || y < r) && x < 192f - r && y < 192f - r;
             return LandDefs.InBlock(new Vector3(x, y, 7f), r) == expected;
-        }));
+        });
 
     /// <summary>Ints around both map edges (−1, 0, 2039, 2040) and far off the map.</summary>
     private static Gen<int> EdgeInts { get; } = Gen.Frequency(

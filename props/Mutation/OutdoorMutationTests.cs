@@ -19,9 +19,9 @@ public sealed class OutdoorMutationTests
         Reset,
     }
 
-    [Fact(DisplayName = "facts §5.9: CellArray keeps insertion order, ignores a duplicate, removes by moving the last entry into the hole, Reset truncates and clears the latch")]
-    public void CellArray_BehavesAsTheRetailOrderedSet() =>
-        Check.One(FixedSeed.Config(0x0C7D_0001), Prop.ForAll(Gen.Zip(Gen.Elements(-3, 0, 1, 2, 4, 16), Ops.ListOf()).ToArbitrary(), t =>
+    [FixedSeedProperty(0x0C7D_0001, DisplayName = "facts §5.9: CellArray keeps insertion order, ignores a duplicate, removes by moving the last entry into the hole, Reset truncates and clears the latch")]
+    public Property CellArray_BehavesAsTheRetailOrderedSet() =>
+        Prop.ForAll(Gen.Zip(Gen.Elements(-3, 0, 1, 2, 4, 16), Ops.ListOf()).ToArbitrary(), t =>
         {
             var (capacity, ops) = t;
             var array = new CellArray(capacity);
@@ -76,7 +76,7 @@ public sealed class OutdoorMutationTests
             }
 
             return true;
-        }));
+        });
 
     [Fact(DisplayName = "facts §5.9: CellArray's indexer refuses -1, Count and beyond with ArgumentOutOfRangeException, even where capacity is spare")]
     public void CellArray_IndexerRefusesOutsideCount()
@@ -89,9 +89,9 @@ public sealed class OutdoorMutationTests
         Assert.All(new[] { -1, 1, 2, 15, 16, int.MaxValue, int.MinValue }, i => Assert.Throws<ArgumentOutOfRangeException>(() => array[i]));
     }
 
-    [Fact(DisplayName = "facts §3.2: check_add_cell_boundary adds exactly the neighbours of the strict per-axis rule, in retail's call order, skipping off-map lcoords")]
-    public void CheckAddCellBoundary_IsTheStrictPerAxisRuleInCallOrder() =>
-        Check.One(FixedSeed.Config(0x0C7D_0002), Prop.ForAll(FixedSeed.Zip(Radii, Gen.Zip(Gen.Choose(0, 9), Gen.Choose(0, 9)), Gen.Zip(MapEdgeInts, MapEdgeInts)).ToArbitrary(), t =>
+    [FixedSeedProperty(0x0C7D_0002, DisplayName = "facts §3.2: check_add_cell_boundary adds exactly the neighbours of the strict per-axis rule, in retail's call order, skipping off-map lcoords")]
+    public Property CheckAddCellBoundary_IsTheStrictPerAxisRuleInCallOrder() =>
+        Prop.ForAll(FixedSeed.Zip(Radii, Gen.Zip(Gen.Choose(0, 9), Gen.Choose(0, 9)), Gen.Zip(MapEdgeInts, MapEdgeInts)).ToArbitrary(), t =>
         {
             var (r, (px, py), (x, y)) = t;
             float minRad = r, maxRad = LandDefs.CellLength - r;
@@ -148,11 +148,11 @@ public sealed class OutdoorMutationTests
             }
 
             return array.ToIdArray().SequenceEqual(expected);
-        }));
+        });
 
-    [Fact(DisplayName = "facts §3.3 step 3: with no spheres, add_all_outside_cells adds the one land cell AdjustToOutside gives the position, or nothing, and sets the latch")]
-    public void AddAllOutsideCells_NoSpheresAddsThePositionsColumn() =>
-        Check.One(FixedSeed.Config(0x0C7D_0003), Prop.ForAll(Gen.Zip(Positions, Points).ToArbitrary(), t =>
+    [FixedSeedProperty(0x0C7D_0003, DisplayName = "facts §3.3 step 3: with no spheres, add_all_outside_cells adds the one land cell AdjustToOutside gives the position, or nothing, and sets the latch")]
+    public Property AddAllOutsideCells_NoSpheresAddsThePositionsColumn() =>
+        Prop.ForAll(Gen.Zip(Positions, Points).ToArbitrary(), t =>
         {
             var (position, origin) = t;
             var array = new CellArray();
@@ -161,11 +161,11 @@ public sealed class OutdoorMutationTests
             float x = origin.X, y = origin.Y;
             CellId[] expected = LandDefs.AdjustToOutside(ref id, ref x, ref y) ? [id] : [];
             return array.AddedOutside && array.ToIdArray().SequenceEqual(expected);
-        }));
+        });
 
-    [Fact(DisplayName = "facts §4 step 4: find_cell_list with no spheres collects the position's column and picks nothing")]
-    public void FindCellListOutdoor_NoSpheresPicksNothing() =>
-        Check.One(FixedSeed.Config(0x0C7D_0004), Prop.ForAll(Positions.ToArbitrary(), position =>
+    [FixedSeedProperty(0x0C7D_0004, DisplayName = "facts §4 step 4: find_cell_list with no spheres collects the position's column and picks nothing")]
+    public Property FindCellListOutdoor_NoSpheresPicksNothing() =>
+        Prop.ForAll(Positions.ToArbitrary(), position =>
         {
             var array = new CellArray();
             array.Add(new CellId(0x01010001), true); // stale: the query truncates first
@@ -174,7 +174,7 @@ public sealed class OutdoorMutationTests
             float x = 0f, y = 0f;
             CellId[] expected = LandDefs.AdjustToOutside(ref id, ref x, ref y) ? [id] : [];
             return pick == CellId.None && array.ToIdArray().SequenceEqual(expected);
-        }));
+        });
 
     [Fact(DisplayName = "facts §4 step 4b: the outdoor pick chooses only loaded land cells; a loaded env id or an unloaded land cell whose square holds the centre is skipped")]
     public void PickOutdoor_ChoosesOnlyLoadedLandCells()
@@ -196,9 +196,9 @@ public sealed class OutdoorMutationTests
         Assert.Equal(new CellId(0xA9B40001), ContainingCell.PickOutdoor(both, position, new Vector3(12f, 12f, 0f), PickPolicy.Retail, CellId.None));
     }
 
-    [Fact(DisplayName = "facts §3.1 and §7 #2: add_outside_cell adds an on-map cell with its block's loaded state (retail), or only when loaded (ACE)")]
-    public void AddOutsideCell_RetailHintsAceDrops() =>
-        Check.One(FixedSeed.Config(0x0C7D_0005), Prop.ForAll(Gen.Zip(Gen.Zip(MapEdgeInts, MapEdgeInts), Gen.Elements(true, false)).ToArbitrary(), t =>
+    [FixedSeedProperty(0x0C7D_0005, DisplayName = "facts §3.1 and §7 #2: add_outside_cell adds an on-map cell with its block's loaded state (retail), or only when loaded (ACE)")]
+    public Property AddOutsideCell_RetailHintsAceDrops() =>
+        Prop.ForAll(Gen.Zip(Gen.Zip(MapEdgeInts, MapEdgeInts), Gen.Elements(true, false)).ToArbitrary(), t =>
         {
             var ((x, y), ace) = t;
             var fidelity = ace ? OutdoorFidelity.Ace : OutdoorFidelity.Retail;
@@ -208,7 +208,7 @@ public sealed class OutdoorMutationTests
             bool loaded = !id.IsNone && Checkerboard.Instance.IsLoaded(id.Landblock);
             CellEntry[] expected = id.IsNone || (ace && !loaded) ? [] : [new CellEntry(id, loaded)];
             return fidelity.DropUnloadedCells == ace && CellArrays.Entries(array).SequenceEqual(expected);
-        }));
+        });
 
     /// <summary>Sequences of array operations over a small pool of ids, so duplicates and removals of present ids are common.</summary>
     private static Gen<(OpKind Kind, CellId Id, bool Loaded)> Ops { get; } =

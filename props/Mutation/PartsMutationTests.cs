@@ -33,9 +33,9 @@ public sealed class PartsMutationTests
         Assert.Equal([Anchor], once.ToIdArray());
     }
 
-    [Fact(DisplayName = "facts §7 #3: with ACE's guard, add_cell_block keeps exactly the cells in the caller's landblock, in x-outer y-inner order")]
-    public void AddCellBlock_AceGuardKeepsTheCallersBlock() =>
-        Check.One(FixedSeed.Config(0x9A47_0001), Prop.ForAll(Gen.Zip(Gen.Zip(Gen.Choose(1350, 1362), Gen.Choose(1438, 1450)), Gen.Elements(true, false)).ToArbitrary(), t =>
+    [FixedSeedProperty(0x9A47_0001, DisplayName = "facts §7 #3: with ACE's guard, add_cell_block keeps exactly the cells in the caller's landblock, in x-outer y-inner order")]
+    public Property AddCellBlock_AceGuardKeepsTheCallersBlock() =>
+        Prop.ForAll(Gen.Zip(Gen.Zip(Gen.Choose(1350, 1362), Gen.Choose(1438, 1450)), Gen.Elements(true, false)).ToArbitrary(), t =>
         {
             var ((x0, y0), guard) = t;
             var caller = LandDefs.LcoordToGid(1356, 1444);
@@ -55,7 +55,7 @@ public sealed class PartsMutationTests
             }
 
             return array.ToIdArray().SequenceEqual(expected);
-        }));
+        });
 
     [Fact(DisplayName = "facts §7 #3–#4: PartsFidelity.Ace turns on the same-block guard and every-part anchors; Retail neither")]
     public void PartsFidelity_AceAndRetailFlags()
@@ -66,9 +66,9 @@ public sealed class PartsMutationTests
         Assert.False(PartsFidelity.Retail.EveryPartAnchors);
     }
 
-    [Fact(DisplayName = "facts §3.4: adding a part whose extent is non-finite on any one side (x, y, min or max) changes no query's cells")]
-    public void PartsAddAllOutsideCells_NonFinitePartNamesNoCell() =>
-        Check.One(FixedSeed.Config(0x9A47_0003), Prop.ForAll(Gen.Zip(PartsGens.Cases, Gen.Zip(Gen.Choose(0, 5), Gen.Choose(0, 8))).ToArbitrary(), t =>
+    [FixedSeedProperty(0x9A47_0003, DisplayName = "facts §3.4: adding a part whose extent is non-finite on any one side (x, y, min or max) changes no query's cells")]
+    public Property PartsAddAllOutsideCells_NonFinitePartNamesNoCell() =>
+        Prop.ForAll(Gen.Zip(PartsGens.Cases, Gen.Zip(Gen.Choose(0, 5), Gen.Choose(0, 8))).ToArbitrary(), t =>
         {
             var (c, (side, at)) = t;
             var anchor = c.Parts[0];
@@ -96,11 +96,11 @@ public sealed class PartsMutationTests
                 .Classify(side < 2, "NaN coordinate")
                 .Classify(side >= 2, "one infinite side")
                 .Classify(index == with.Length - 1, "non-finite part last");
-        }));
+        });
 
-    [Fact(DisplayName = "facts §5.8: Frame.LocalToGlobal is origin + R·p and GlobalToLocal is its inverse Rᵀ·(p − origin)")]
-    public void Frame_TransformsAreOriginPlusRotationAndInverse() =>
-        Check.One(FixedSeed.Config(0x9A47_0002), Prop.ForAll(Gen.Zip(Gen.Zip(Coord, Coord, (a, b) => new Vector3(a, b, 5f)), Gen.Zip(Gen.Choose(0, 359), Gen.Zip(Coord, Coord))).ToArbitrary(), t =>
+    [FixedSeedProperty(0x9A47_0002, DisplayName = "facts §5.8: Frame.LocalToGlobal is origin + R·p and GlobalToLocal is its inverse Rᵀ·(p − origin)")]
+    public Property Frame_TransformsAreOriginPlusRotationAndInverse() =>
+        Prop.ForAll(Gen.Zip(Gen.Zip(Coord, Coord, (a, b) => new Vector3(a, b, 5f)), Gen.Zip(Gen.Choose(0, 359), Gen.Zip(Coord, Coord))).ToArbitrary(), t =>
         {
             var (origin, (degrees, (px, py))) = t;
             var rotation = Quaternion.CreateFromAxisAngle(Vector3.UnitZ, degrees * MathF.PI / 180f);
@@ -114,7 +114,7 @@ public sealed class PartsMutationTests
             return Vector3.Distance(global, expected) < 1e-3f && Vector3.Distance(back, p) < 1e-3f
                 && Vector3.Distance(frame.GlobalToLocal(origin), Vector3.Zero) < 1e-3f
                 && Vector3.Distance(unitX, new Vector3(MathF.Cos(rad), MathF.Sin(rad), 0f)) < 1e-4f;
-        }));
+        });
 
     private static Gen<float> Coord { get; } = Gen.Choose(1, 190_000).Select(i => i / 1000f);
 

@@ -14,20 +14,20 @@ namespace AcPhys.Props.Mutation;
 /// </summary>
 public sealed class PartsTransitProperties
 {
-    [Fact(DisplayName = "facts §5.2: by parts, each portal adds its neighbour (or a not-loaded hint, or the outside) iff some part passes the sphere gate and its box is not wholly on the cell's side; the neighbour only if such a box intersects it")]
-    public void FindTransitCells_IsTheSetStatementOfTheFacts() =>
-        Check.One(FixedSeed.Config(0x9A75_0001), Prop.ForAll(Cases.ToArbitrary(), c =>
+    [FixedSeedProperty(0x9A75_0001, DisplayName = "facts §5.2: by parts, each portal adds its neighbour (or a not-loaded hint, or the outside) iff some part passes the sphere gate and its box is not wholly on the cell's side; the neighbour only if such a box intersects it")]
+    public Property FindTransitCells_IsTheSetStatementOfTheFacts() =>
+        Prop.ForAll(Cases.ToArbitrary(), c =>
         {
             var actual = new CellArray();
             EnvTransitParts.FindTransitCells(actual, c.Scene, c.Cell, c.Parts, c.Fidelity);
             var expected = ExpectedTransit(c.Scene, c.Cell, c.Parts, c.Fidelity, out var kinds);
             return Same(actual, expected).Label($"cell {c.Cell.Id}, parts {string.Join("; ", c.Parts)}: {Text(actual)} vs {Text(expected)}")
                 .Collect(string.Join("+", kinds.Distinct().Order()));
-        }));
+        });
 
-    [Fact(DisplayName = "facts §5.3: by parts, a building portal enters its cell iff some part passes the entering gate, its box side is Crossing or the accepted side (retail: the cell's own, ACE: the other) and the box intersects the cell; then that cell's parts transit runs")]
-    public void CheckBuildingTransit_IsTheSetStatementOfTheFacts() =>
-        Check.One(FixedSeed.Config(0x9A75_0002), Prop.ForAll(FixedSeed.Zip(Cases, Gen.Elements(false, true), Gen.Choose(-2, 5)).ToArbitrary(), t =>
+    [FixedSeedProperty(0x9A75_0002, DisplayName = "facts §5.3: by parts, a building portal enters its cell iff some part passes the entering gate, its box side is Crossing or the accepted side (retail: the cell's own, ACE: the other) and the box intersects the cell; then that cell's parts transit runs")]
+    public Property CheckBuildingTransit_IsTheSetStatementOfTheFacts() =>
+        Prop.ForAll(FixedSeed.Zip(Cases, Gen.Elements(false, true), Gen.Choose(-2, 5)).ToArbitrary(), t =>
         {
             var (c, aceBoxSide, pick) = t;
             ushort portalId = pick == -2 ? BldPortal.None : pick == -1 ? (ushort)c.Cell.Portals.Length : (ushort)c.PortalIndex;
@@ -62,7 +62,7 @@ public sealed class PartsTransitProperties
 
             return (entered == enters && Same(actual, expected)).Label($"{Text(actual)} vs {Text(expected)}")
                 .Classify(enters, "entered").Classify(portalId >= c.Cell.Portals.Length, "no such portal");
-        }));
+        });
 
     private static Gen<Case> Cases { get; } =
         from cottage in CottageProbe.Cottages

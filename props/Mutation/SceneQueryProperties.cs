@@ -17,9 +17,9 @@ namespace AcPhys.Props.Mutation;
 /// </summary>
 public sealed class SceneQueryProperties
 {
-    [Fact(DisplayName = "facts §4 step 3, §5.3: HitsInteriorCell is set iff the position is indoor or an env cell joined the array (building entry, or the interior pick it makes possible)")]
-    public void HitsInteriorCell_IsIndoorOrAnEnvCellJoined() =>
-        Check.One(FixedSeed.Config(0x5C0E_0001), Prop.ForAll(Queries.ToArbitrary(), q =>
+    [FixedSeedProperty(0x5C0E_0001, DisplayName = "facts §4 step 3, §5.3: HitsInteriorCell is set iff the position is indoor or an env cell joined the array (building entry, or the interior pick it makes possible)")]
+    public Property HitsInteriorCell_IsIndoorOrAnEnvCellJoined() =>
+        Prop.ForAll(Queries.ToArbitrary(), q =>
         {
             var fresh = q with { Options = q.Options with { LoadCells = true, Fidelity = q.Fidelity with { AceKeepsStaleCells = false } } };
             var (result, array) = fresh.Run();
@@ -27,11 +27,11 @@ public sealed class SceneQueryProperties
             bool expected = q.Position.IsIndoorByLowWord || envJoined;
             return (result.HitsInteriorCell == expected).Label($"{q}: hits {result.HitsInteriorCell}, array {Text(array)}")
                 .Classify(q.Position.IsIndoorByLowWord, "indoor").Classify(!q.Position.IsIndoorByLowWord && envJoined, "outdoor, entered");
-        }));
+        });
 
-    [Fact(DisplayName = "facts §4 step 2: a position with no visible cell (id 0, an out-of-range low word, an unloaded block, a room the scene lacks) is neither walked nor picked from, stale cells or not")]
-    public void InvisiblePosition_PicksNothing() =>
-        Check.One(FixedSeed.Config(0x5C0E_0002), Prop.ForAll(Queries.ToArbitrary(), q =>
+    [FixedSeedProperty(0x5C0E_0002, DisplayName = "facts §4 step 2: a position with no visible cell (id 0, an out-of-range low word, an unloaded block, a room the scene lacks) is neither walked nor picked from, stale cells or not")]
+    public Property InvisiblePosition_PicksNothing() =>
+        Prop.ForAll(Queries.ToArbitrary(), q =>
         {
             bool visible = q.Position.IsIndoorByLowWord
                 ? q.Scene.GetEnvCell(q.Position) is not null
@@ -39,11 +39,11 @@ public sealed class SceneQueryProperties
             var (result, _) = q.Run();
             bool ok = visible || (result.Containing == CellId.None && result.HitsInteriorCell == q.Position.IsIndoorByLowWord);
             return ok.Label($"{q}: {result}").Classify(!visible, "invisible").Classify(!visible && q.Stale, "invisible, stale array");
-        }));
+        });
 
-    [Fact(DisplayName = "facts §4 step 4a: whenever a loaded land cell is walked, the position's own outdoor cells are in the array (LandCell.find_transit_cells runs add_all_outside_cells first)")]
-    public void WalkedLandCell_BringsThePositionsOutdoorCells() =>
-        Check.One(FixedSeed.Config(0x5C0E_0003), Prop.ForAll(Queries.ToArbitrary(), q =>
+    [FixedSeedProperty(0x5C0E_0003, DisplayName = "facts §4 step 4a: whenever a loaded land cell is walked, the position's own outdoor cells are in the array (LandCell.find_transit_cells runs add_all_outside_cells first)")]
+    public Property WalkedLandCell_BringsThePositionsOutdoorCells() =>
+        Prop.ForAll(Queries.ToArbitrary(), q =>
         {
             var probe = q with { Options = q.Options with { LoadCells = true } }; // no filter: what was added stays
             var (_, array) = probe.Run();
@@ -54,11 +54,11 @@ public sealed class SceneQueryProperties
             bool ok = !walked || outdoor.ToIdArray().All(array.Contains);
             return ok.Label($"{q}: {Text(array)} lacks some of {Text(outdoor)}")
                 .Classify(walked, "indoor position, a land cell walked").Classify(walked && q.Stale, "stale land cell walked");
-        }));
+        });
 
-    [Fact(DisplayName = "facts §4 step 5: indoors without LoadCells, the filter leaves only the position, the loaded cells it sees and load hints, unless ACE returned early from an interior pick")]
-    public void IndoorFilter_RunsUnlessAceReturnedEarly() =>
-        Check.One(FixedSeed.Config(0x5C0E_0004), Prop.ForAll(Queries.ToArbitrary(), q =>
+    [FixedSeedProperty(0x5C0E_0004, DisplayName = "facts §4 step 5: indoors without LoadCells, the filter leaves only the position, the loaded cells it sees and load hints, unless ACE returned early from an interior pick")]
+    public Property IndoorFilter_RunsUnlessAceReturnedEarly() =>
+        Prop.ForAll(Queries.ToArbitrary(), q =>
         {
             var probe = q with { Options = q.Options with { LoadCells = false } };
             var (result, array) = probe.Run();
@@ -70,11 +70,11 @@ public sealed class SceneQueryProperties
                 !e.Loaded || e.Id == q.Position || (visible is not null && visible.Sees(e.Id) && q.Scene.GetEnvCell(e.Id) is not null));
             return ok.Label($"{q}: {Text(array)}")
                 .Classify(filtered && !probe.Options.Pick, "filtered, no pick").Classify(earlyReturn, "ACE early return");
-        }));
+        });
 
-    [Fact(DisplayName = "facts §4 step 4b: current-first differs from the retail pick only by keeping a held, loaded current cell that still contains the centre (an env cell always, a land cell unless an env cell contains it); interior iff an env cell is the answer")]
-    public void CurrentFirst_IsTheRetailPickUnlessTheCurrentCellStillHolds() =>
-        Check.One(FixedSeed.Config(0x5C0E_0005), Prop.ForAll(Queries.ToArbitrary(), q =>
+    [FixedSeedProperty(0x5C0E_0005, DisplayName = "facts §4 step 4b: current-first differs from the retail pick only by keeping a held, loaded current cell that still contains the centre (an env cell always, a land cell unless an env cell contains it); interior iff an env cell is the answer")]
+    public Property CurrentFirst_IsTheRetailPickUnlessTheCurrentCellStillHolds() =>
+        Prop.ForAll(Queries.ToArbitrary(), q =>
         {
             var candidates = new CellArray();
             SceneQuery.FindCellList(candidates, q.Scene, q.Position, q.Spheres, CellId.None, q.Options with { Pick = false, LoadCells = true });
@@ -88,11 +88,11 @@ public sealed class SceneQueryProperties
             var expected = holds && (q.Current.IsEnv || (q.Current.IsLand && !retail.IsEnv)) ? q.Current : retail;
             return (pick == expected && interior == expected.IsEnv).Label($"{q}: {pick} {interior} vs {expected}")
                 .Classify(holds, "current still holds").Classify(at < 0 && !q.Current.IsNone, "current not in the array");
-        }));
+        });
 
-    [Fact(DisplayName = "facts §4 step 2, §5.3: a scene answers an env cell or a building iff it was declared and its block is loaded")]
-    public void CellScene_AnswersOnlyDeclaredCellsOfLoadedBlocks() =>
-        Check.One(FixedSeed.Config(0x5C0E_0006), Prop.ForAll(FixedSeed.Zip(Plans, Gen.Choose(0, 511), Gen.Choose(0, 7)).ToArbitrary(), t =>
+    [FixedSeedProperty(0x5C0E_0006, DisplayName = "facts §4 step 2, §5.3: a scene answers an env cell or a building iff it was declared and its block is loaded")]
+    public Property CellScene_AnswersOnlyDeclaredCellsOfLoadedBlocks() =>
+        Prop.ForAll(FixedSeed.Zip(Plans, Gen.Choose(0, 511), Gen.Choose(0, 7)).ToArbitrary(), t =>
         {
             var (plan, mask, extra) = t;
             var full = SceneBuild.Build(SceneKit.Cottage(plan));
@@ -106,7 +106,7 @@ public sealed class SceneQueryProperties
                 && (scene.GetBuilding(owner) is not null) == loaded
                 && scene.GetBuilding(owner.WithLow((ushort)((owner.Low % 64) + 1))) is null;
             return ok.Classify(loaded, "block loaded").Classify(declared, "declared");
-        }));
+        });
 
     private static Gen<CottagePlan> Plans { get; } =
         from blockX in Gen.Choose(2, 250)

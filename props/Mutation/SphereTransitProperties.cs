@@ -24,9 +24,9 @@ public sealed class SphereTransitProperties
             AceOutsideByCellId: (flags & 4) != 0,
             ReframeTransit: (flags & 8) != 0);
 
-    [Fact(DisplayName = "facts §5.1: by spheres, an exit portal adds the outside iff −R < d < R; a loaded neighbour is added iff a sphere (unpadded, its frame) intersects it; otherwise a hint iff the sphere reaches the neighbour's side; centres re-framed only when the fidelity says so (§6.11)")]
-    public void FindTransitCells_IsTheSetStatementOfTheFacts() =>
-        Check.One(FixedSeed.Config(0x5F7A_0001), Prop.ForAll(Cases.ToArbitrary(), c =>
+    [FixedSeedProperty(0x5F7A_0001, DisplayName = "facts §5.1: by spheres, an exit portal adds the outside iff −R < d < R; a loaded neighbour is added iff a sphere (unpadded, its frame) intersects it; otherwise a hint iff the sphere reaches the neighbour's side; centres re-framed only when the fidelity says so (§6.11)")]
+    public Property FindTransitCells_IsTheSetStatementOfTheFacts() =>
+        Prop.ForAll(Cases.ToArbitrary(), c =>
         {
             var actual = new CellArray();
             EnvTransit.FindTransitCells(actual, c.Scene, c.Cell, c.Position, c.Spheres, c.Fidelity);
@@ -34,11 +34,11 @@ public sealed class SphereTransitProperties
             return Same(actual, expected).Label($"{c}: {Text(actual)} vs {Text(expected)}")
                 .Collect(string.Join("+", kinds.Distinct().Order()))
                 .Classify(c.Position.Landblock != c.Cell.Id.Landblock, "position in a neighbouring block");
-        }));
+        });
 
-    [Fact(DisplayName = "facts §5.3: by spheres, each building portal with a portal id whose cell is loaded adds that cell iff a sphere (unpadded, the cell's frame) intersects it, and the answer says whether any did (HitsInteriorCell)")]
-    public void FindBuildingTransitCells_IsTheSetStatementOfTheFacts() =>
-        Check.One(FixedSeed.Config(0x5F7A_0002), Prop.ForAll(Gen.Zip(Cases, Gen.Choose(0, 255)).ToArbitrary(), t =>
+    [FixedSeedProperty(0x5F7A_0002, DisplayName = "facts §5.3: by spheres, each building portal with a portal id whose cell is loaded adds that cell iff a sphere (unpadded, the cell's frame) intersects it, and the answer says whether any did (HitsInteriorCell)")]
+    public Property FindBuildingTransitCells_IsTheSetStatementOfTheFacts() =>
+        Prop.ForAll(Gen.Zip(Cases, Gen.Choose(0, 255)).ToArbitrary(), t =>
         {
             var (c, mask) = t;
             var (landCell, building) = c.Scene.Buildings.First();
@@ -72,7 +72,7 @@ public sealed class SphereTransitProperties
             return (hit == hits && Same(actual, expected)).Label($"{c}: {hit} {Text(actual)} vs {hits} {Text(expected)}")
                 .Classify(hits, "entered")
                 .Classify(portals.Any(p => p.OtherPortalId != BldPortal.None && c.Scene.GetEnvCell(landCell.WithLow(p.OtherCellId)) is null), "a portal to an absent room");
-        }));
+        });
 
     private static Gen<Case> Cases { get; } =
         from cottage in CottageProbe.Cottages

@@ -12,20 +12,20 @@ namespace AcPhys.Props.Mutation;
 /// </summary>
 public sealed class ValueTypeMutationTests
 {
-    [Fact(DisplayName = "facts §1.1: CellId's four ordering operators agree with the raw 32-bit value, ties included")]
-    public void CellId_OrderingOperatorsFollowRawValue() =>
-        Check.One(FixedSeed.Config(0x0DE5_0001), Prop.ForAll(FixedSeed.NearPairs.ToArbitrary(), p =>
+    [FixedSeedProperty(0x0DE5_0001, DisplayName = "facts §1.1: CellId's four ordering operators agree with the raw 32-bit value, ties included")]
+    public Property CellId_OrderingOperatorsFollowRawValue() =>
+        Prop.ForAll(FixedSeed.NearPairs.ToArbitrary(), p =>
         {
             var x = new CellId(p.A);
             var y = new CellId(p.B);
             return (x < y) == (p.A < p.B) && (x > y) == (p.A > p.B)
                 && (x <= y) == (p.A <= p.B) && (x >= y) == (p.A >= p.B)
                 && Math.Sign(x.CompareTo(y)) == Math.Sign(p.A.CompareTo(p.B));
-        }));
+        });
 
-    [Fact(DisplayName = "facts §1.1: CellId equality is raw-value equality, through ==, !=, Equals(object) and the hash")]
-    public void CellId_EqualityIsRawValueEquality() =>
-        Check.One(FixedSeed.Config(0x0DE5_0002), Prop.ForAll(FixedSeed.NearPairs.ToArbitrary(), p =>
+    [FixedSeedProperty(0x0DE5_0002, DisplayName = "facts §1.1: CellId equality is raw-value equality, through ==, !=, Equals(object) and the hash")]
+    public Property CellId_EqualityIsRawValueEquality() =>
+        Prop.ForAll(FixedSeed.NearPairs.ToArbitrary(), p =>
         {
             var x = new CellId(p.A);
             var y = new CellId(p.B);
@@ -33,11 +33,11 @@ public sealed class ValueTypeMutationTests
             return (x == y) == same && (x != y) == !same && x.Equals(y) == same
                 && x.Equals((object)y) == same && !x.Equals((object)p.A) && !x.Equals(null)
                 && (!same || x.GetHashCode() == y.GetHashCode());
-        }));
+        });
 
-    [Fact(DisplayName = "facts §1.1: a CellId's parts are bits 31..24, 23..16 and 15..0, and its landblock is the high word")]
-    public void CellId_PartsAreTheDocumentedBits() =>
-        Check.One(FixedSeed.Config(0x0DE5_0003), Prop.ForAll(FixedSeed.Uints.ToArbitrary(), v =>
+    [FixedSeedProperty(0x0DE5_0003, DisplayName = "facts §1.1: a CellId's parts are bits 31..24, 23..16 and 15..0, and its landblock is the high word")]
+    public Property CellId_PartsAreTheDocumentedBits() =>
+        Prop.ForAll(FixedSeed.Uints.ToArbitrary(), v =>
         {
             var id = new CellId(v);
             return id.BlockX == (v >> 24) && id.BlockY == ((v >> 16) & 0xFF) && id.Low == (v & 0xFFFF)
@@ -45,11 +45,11 @@ public sealed class ValueTypeMutationTests
                 && id.IsNone == (v == 0)
                 && new CellId(id.BlockX, id.BlockY, id.Low).Value == v
                 && id.WithLow(0x1234).Value == ((v & 0xFFFF0000) | 0x1234);
-        }));
+        });
 
-    [Fact(DisplayName = "facts §1.1: the low-word classes are land 1..64, env 0x100..0xFFFD, block 0xFFFF; indoor is low >= 0x100 (block id and 0xFFFE included)")]
-    public void CellId_LowWordClassesMatchTheTable() =>
-        Check.One(FixedSeed.Config(0x0DE5_0004), Prop.ForAll(LowWords.ToArbitrary(), low =>
+    [FixedSeedProperty(0x0DE5_0004, DisplayName = "facts §1.1: the low-word classes are land 1..64, env 0x100..0xFFFD, block 0xFFFF; indoor is low >= 0x100 (block id and 0xFFFE included)")]
+    public Property CellId_LowWordClassesMatchTheTable() =>
+        Prop.ForAll(LowWords.ToArbitrary(), low =>
         {
             var id = new CellId(0xA9, 0xB4, low);
             bool land = low >= 1 && low <= 64;
@@ -58,11 +58,11 @@ public sealed class ValueTypeMutationTests
             return id.IsLand == land && id.IsEnv == env && id.IsBlock == block
                 && id.IsIndoorByLowWord == (low >= 0x100)
                 && LandDefs.CellInRange(low) == (land || env || block);
-        }));
+        });
 
-    [Fact(DisplayName = "facts §1.1: LandblockId(x, y) is the high word 0xXXYY, and equals the landblock of any id with those bytes")]
-    public void LandblockId_BytesComposeTheHighWord() =>
-        Check.One(FixedSeed.Config(0x0DE5_0005), Prop.ForAll(FixedSeed.Zip(FixedSeed.Bytes, FixedSeed.Bytes, LowWords).ToArbitrary(), t =>
+    [FixedSeedProperty(0x0DE5_0005, DisplayName = "facts §1.1: LandblockId(x, y) is the high word 0xXXYY, and equals the landblock of any id with those bytes")]
+    public Property LandblockId_BytesComposeTheHighWord() =>
+        Prop.ForAll(FixedSeed.Zip(FixedSeed.Bytes, FixedSeed.Bytes, LowWords).ToArbitrary(), t =>
         {
             var (x, y, low) = t;
             var block = new LandblockId(x, y);
@@ -70,20 +70,20 @@ public sealed class ValueTypeMutationTests
                 && block == new CellId(x, y, low).Landblock
                 && block == new LandblockId((ushort)((x << 8) | y))
                 && block.BlockCell == new CellId(x, y, LandDefs.BlockCellId);
-        }));
+        });
 
-    [Fact(DisplayName = "facts §1.3: a landblock is on the map exactly when both bytes are 0x00..0xFE, as blockid_to_lcoord says")]
-    public void LandblockId_IsOnMapIffNoFfByte() =>
-        Check.One(FixedSeed.Config(0x0DE5_0006), Prop.ForAll(Gen.Zip(FixedSeed.Bytes, FixedSeed.Bytes).ToArbitrary(), t =>
+    [FixedSeedProperty(0x0DE5_0006, DisplayName = "facts §1.3: a landblock is on the map exactly when both bytes are 0x00..0xFE, as blockid_to_lcoord says")]
+    public Property LandblockId_IsOnMapIffNoFfByte() =>
+        Prop.ForAll(Gen.Zip(FixedSeed.Bytes, FixedSeed.Bytes).ToArbitrary(), t =>
         {
             var block = new LandblockId(t.Item1, t.Item2);
             bool expected = t.Item1 <= 0xFE && t.Item2 <= 0xFE;
             return block.IsOnMap == expected && LandDefs.BlockIdToLcoord(block.BlockCell, out _) == expected;
-        }));
+        });
 
-    [Fact(DisplayName = "facts §1.2: LandblockId.LandCell(cx, cy) has low word 1 + 8·cx + cy and is lcoord_to_gid(8·bx + cx, 8·by + cy)")]
-    public void LandblockId_LandCellIsTheXMajorIndex() =>
-        Check.One(FixedSeed.Config(0x0DE5_0007), Prop.ForAll(FixedSeed.Zip(FixedSeed.Bytes, FixedSeed.Bytes, Gen.Zip(Gen.Choose(0, 7), Gen.Choose(0, 7))).ToArbitrary(), t =>
+    [FixedSeedProperty(0x0DE5_0007, DisplayName = "facts §1.2: LandblockId.LandCell(cx, cy) has low word 1 + 8·cx + cy and is lcoord_to_gid(8·bx + cx, 8·by + cy)")]
+    public Property LandblockId_LandCellIsTheXMajorIndex() =>
+        Prop.ForAll(FixedSeed.Zip(FixedSeed.Bytes, FixedSeed.Bytes, Gen.Zip(Gen.Choose(0, 7), Gen.Choose(0, 7))).ToArbitrary(), t =>
         {
             var (x, y, (cx, cy)) = t;
             var block = new LandblockId(x, y);
@@ -91,21 +91,21 @@ public sealed class ValueTypeMutationTests
             bool shape = cell.Landblock == block && cell.Low == 1 + (8 * cx) + cy && cell.IsLand;
             bool onMap = !block.IsOnMap || cell == LandDefs.LcoordToGid((8 * x) + cx, (8 * y) + cy);
             return shape && onMap;
-        }));
+        });
 
-    [Fact(DisplayName = "facts §1.2: LandblockId.LandCell refuses cx or cy outside 0..7, naming the argument, its value and the range")]
-    public void LandblockId_LandCellRefusesOutOfRange() =>
-        Check.One(FixedSeed.Config(0x0DE5_0008), Prop.ForAll(FixedSeed.Zip(OutOfRangeIndex, Gen.Choose(0, 7), Gen.Elements(true, false)).ToArbitrary(), t =>
+    [FixedSeedProperty(0x0DE5_0008, DisplayName = "facts §1.2: LandblockId.LandCell refuses cx or cy outside 0..7, naming the argument, its value and the range")]
+    public Property LandblockId_LandCellRefusesOutOfRange() =>
+        Prop.ForAll(FixedSeed.Zip(OutOfRangeIndex, Gen.Choose(0, 7), Gen.Elements(true, false)).ToArbitrary(), t =>
         {
             var (bad, good, badIsX) = t;
             var block = new LandblockId(0x12, 0x34);
             var e = Assert.Throws<ArgumentOutOfRangeException>(() => { _ = badIsX ? block.LandCell(bad, good) : block.LandCell(good, bad); });
             return e.ParamName == (badIsX ? "cx" : "cy") && Equals(e.ActualValue, bad) && e.Message.Contains("[0, 7]", StringComparison.Ordinal);
-        }));
+        });
 
-    [Fact(DisplayName = "facts §1.1: LandblockId equality is value equality, through ==, !=, Equals(object) and the hash")]
-    public void LandblockId_EqualityIsValueEquality() =>
-        Check.One(FixedSeed.Config(0x0DE5_0009), Prop.ForAll(FixedSeed.NearPairs.ToArbitrary(), p =>
+    [FixedSeedProperty(0x0DE5_0009, DisplayName = "facts §1.1: LandblockId equality is value equality, through ==, !=, Equals(object) and the hash")]
+    public Property LandblockId_EqualityIsValueEquality() =>
+        Prop.ForAll(FixedSeed.NearPairs.ToArbitrary(), p =>
         {
             var x = new LandblockId((ushort)p.A);
             var y = new LandblockId((ushort)p.B);
@@ -113,11 +113,11 @@ public sealed class ValueTypeMutationTests
             return (x == y) == same && (x != y) == !same && x.Equals(y) == same
                 && x.Equals((object)y) == same && !x.Equals((object)(ushort)p.A) && !x.Equals(null)
                 && (!same || x.GetHashCode() == y.GetHashCode());
-        }));
+        });
 
-    [Fact(DisplayName = "facts §1.1: LandblockId text is 0x and four upper-case hex digits, the first six characters of its block id's text")]
-    public void LandblockId_TextIsTheHighWordOfTheCellIdText() =>
-        Check.One(FixedSeed.Config(0x0DE5_000A), Prop.ForAll(Gen.Zip(FixedSeed.Bytes, FixedSeed.Bytes).ToArbitrary(), t =>
+    [FixedSeedProperty(0x0DE5_000A, DisplayName = "facts §1.1: LandblockId text is 0x and four upper-case hex digits, the first six characters of its block id's text")]
+    public Property LandblockId_TextIsTheHighWordOfTheCellIdText() =>
+        Prop.ForAll(Gen.Zip(FixedSeed.Bytes, FixedSeed.Bytes).ToArbitrary(), t =>
         {
             var block = new LandblockId(t.Item1, t.Item2);
             string text = block.ToString();
@@ -125,38 +125,38 @@ public sealed class ValueTypeMutationTests
                 && text == CellIdText.Format(block.BlockCell)[..6]
                 && text[2..] == text[2..].ToUpperInvariant()
                 && ushort.Parse(text.AsSpan(2), NumberStyles.AllowHexSpecifier, CultureInfo.InvariantCulture) == block.Value;
-        }));
+        });
 
-    [Fact(DisplayName = "facts §1.1: CellId text is 0x and eight upper-case hex digits of the raw value")]
-    public void CellId_TextIsUpperCaseHexOfTheRawValue() =>
-        Check.One(FixedSeed.Config(0x0DE5_000B), Prop.ForAll(FixedSeed.Uints.ToArbitrary(), v =>
+    [FixedSeedProperty(0x0DE5_000B, DisplayName = "facts §1.1: CellId text is 0x and eight upper-case hex digits of the raw value")]
+    public Property CellId_TextIsUpperCaseHexOfTheRawValue() =>
+        Prop.ForAll(FixedSeed.Uints.ToArbitrary(), v =>
         {
             var id = new CellId(v);
             string text = id.ToString();
             return text == CellIdText.Format(id) && text.Length == 10 && text.StartsWith("0x", StringComparison.Ordinal)
                 && text[2..] == text[2..].ToUpperInvariant()
                 && uint.Parse(text.AsSpan(2), NumberStyles.AllowHexSpecifier, CultureInfo.InvariantCulture) == v;
-        }));
+        });
 
-    [Fact(DisplayName = "facts §1.3: an lcoord's block origin is its landblock's south-west cell (8·⌊g/8⌋), off the map too")]
-    public void Lcoord_BlockOriginIsTheFlooredMultipleOfEight() =>
-        Check.One(FixedSeed.Config(0x0DE5_000C), Prop.ForAll(Gen.Zip(Ints, Ints).ToArbitrary(), t =>
+    [FixedSeedProperty(0x0DE5_000C, DisplayName = "facts §1.3: an lcoord's block origin is its landblock's south-west cell (8·⌊g/8⌋), off the map too")]
+    public Property Lcoord_BlockOriginIsTheFlooredMultipleOfEight() =>
+        Prop.ForAll(Gen.Zip(Ints, Ints).ToArbitrary(), t =>
         {
             var lc = new Lcoord(t.Item1, t.Item2);
             var origin = lc.BlockOrigin;
             bool floored = origin.X == 8 * Math.Floor(lc.X / 8.0) && origin.Y == 8 * Math.Floor(lc.Y / 8.0);
             bool blockOfGid = !lc.IsOnMap || (LandDefs.BlockIdToLcoord(LandDefs.LcoordToGid(lc), out var b) && b == origin);
             return floored && blockOfGid;
-        }));
+        });
 
-    [Fact(DisplayName = "facts §1.3: Lcoord.Offset(dx, dy) moves dx cells east and dy cells north, unchecked")]
-    public void Lcoord_OffsetAddsTheSteps() =>
-        Check.One(FixedSeed.Config(0x0DE5_000D), Prop.ForAll(FixedSeed.Zip(Gen.Choose(-3000, 3000), Gen.Choose(-3000, 3000), Gen.Zip(Gen.Choose(-9, 9), Gen.Choose(-9, 9))).ToArbitrary(), t =>
+    [FixedSeedProperty(0x0DE5_000D, DisplayName = "facts §1.3: Lcoord.Offset(dx, dy) moves dx cells east and dy cells north, unchecked")]
+    public Property Lcoord_OffsetAddsTheSteps() =>
+        Prop.ForAll(FixedSeed.Zip(Gen.Choose(-3000, 3000), Gen.Choose(-3000, 3000), Gen.Zip(Gen.Choose(-9, 9), Gen.Choose(-9, 9))).ToArbitrary(), t =>
         {
             var (x, y, (dx, dy)) = t;
             var moved = new Lcoord(x, y).Offset(dx, dy);
             return moved.X == x + dx && moved.Y == y + dy && moved.IsOnMap == LandDefs.InBounds(x + dx, y + dy);
-        }));
+        });
 
     /// <summary>Low words of every class and every class edge (facts §1.1), else any.</summary>
     private static Gen<ushort> LowWords { get; } = Gen.Frequency(

@@ -6,8 +6,9 @@ namespace AcPhys.Props.Support;
 /// <summary>
 /// An FsCheck.Xunit <see cref="PropertyAttribute"/> with the CI seed: under the pr profile (<c>ACPHYS_PROFILE=pr</c>, the
 /// default) every run replays the profile's fixed base seed; under nightly FsCheck draws a fresh seed and prints it.
-/// A failure prints FsCheck's own <c>Replay = "(seed,gamma)"</c>; putting that in <see cref="PropertyAttribute.Replay"/>
-/// reproduces it exactly.
+/// A failure prints FsCheck's own <c>Falsifiable, after N tests (K shrinks) (seed,gamma)</c> (and, after more than one
+/// test, <c>Replay directly at failing step with (seed,gamma,size)</c>); putting the first pair in
+/// <see cref="PropertyAttribute.Replay"/> (<c>Replay = "(seed,gamma)"</c>) reproduces the run exactly, in any profile.
 /// </summary>
 [AttributeUsage(AttributeTargets.Method, AllowMultiple = false)]
 public sealed class CiPropertyAttribute : PropertyAttribute

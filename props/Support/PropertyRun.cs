@@ -8,15 +8,19 @@ using Xunit.Sdk;
 namespace AcPhys.Props.Support;
 
 /// <summary>
-/// The catalogue bridge: runs an invariant of the catalogue as an FsCheck property with the CI seed, writes FsCheck's
-/// class distribution to the test output, and on failure throws with the seed and a one-line replay command.
+/// The catalogue bridge: runs an invariant of the catalogue (spec's <see cref="Invariant.Run"/>) with the CI seed,
+/// writes the invariant's class distribution to the test output, and on failure throws with the seed, a failure file
+/// and the replay commands.
 /// </summary>
 /// <remarks>
 /// <para>
-/// Properties that are plain FsCheck properties are <c>[Property]</c> tests of FsCheck.Xunit (with
-/// <see cref="CiPropertyAttribute"/> for the CI seed). This bridge stays only for what FsCheck.Xunit cannot do: one
-/// <c>ACPHYS_SEED</c> for every property, the profiles' case counts, the failure files in artifacts/failures, and the
-/// <c>acphys replay</c> lines printed on failure.
+/// Every property that is a plain FsCheck property is an FsCheck.Xunit test (<see cref="CiPropertyAttribute"/> for the
+/// profile's seed, <c>FixedSeedPropertyAttribute</c> for the mutation-killing ones), failing with FsCheck's own
+/// <c>Replay</c>. This bridge is kept only for what FsCheck.Xunit cannot do for the catalogue: one
+/// <c>ACPHYS_SEED</c> replaying every invariant at once, each invariant's seed derived from the profile's base seed
+/// and its ID, the profiles' case counts (5,000 in pr, 200,000 in nightly), failure files in artifacts/failures, the
+/// <c>acphys replay</c> and <c>acphys verify --only</c> lines printed on failure, and tests that expect an invariant to
+/// fail (planted faults and known bugs are caught).
 /// </para>
 /// <para>
 /// Environment: <c>ACPHYS_PROFILE=nightly</c> (fresh seeds, 40× the cases), <c>ACPHYS_SEED=seed,gamma[,size]</c>

@@ -107,6 +107,12 @@ public static class CorpusJson
         {
             var root = doc.RootElement;
             Require(root.ValueKind == JsonValueKind.Object, source, "$", "expected an object");
+            if (JsonStrings.FirstUnreadable(root, "$") is { } bad)
+            {
+                // Before the duplicate-key search, which reads every property name (a lone surrogate name throws).
+                throw new CorpusFormatException($"{source}: {bad}: not valid text (invalid UTF-8 or a lone UTF-16 surrogate)");
+            }
+
             if (JsonKeys.FirstDuplicate(root) is { } duplicate)
             {
                 throw new CorpusFormatException($"{source}: {duplicate}: duplicate key \"{duplicate[(duplicate.LastIndexOf('.') + 1)..]}\" (each key once per object)");

@@ -170,6 +170,13 @@ public static class SceneJson
 
         using (doc)
         {
+            // Unreadable text first: the duplicate-key search reads every property name, and a lone surrogate
+            // escape in one throws InvalidOperationException (found by the scene-json fuzz target).
+            if (Corpus.JsonStrings.FirstUnreadable(doc.RootElement, "$") is { } bad)
+            {
+                throw new SceneFormatException($"{source}: {bad}: not valid text (a lone UTF-16 surrogate escape)");
+            }
+
             if (AcPhys.Spec.Corpus.JsonKeys.FirstDuplicate(doc.RootElement) is { } duplicate)
             {
                 throw new SceneFormatException($"{source}: {duplicate}: duplicate key (each key once per object)");
