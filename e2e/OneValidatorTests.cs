@@ -7,7 +7,7 @@ namespace AcPhys.E2E;
 
 /// <summary>
 /// One validator (issue 19): a protocol request to <c>serve</c> is refused for exactly what a corpus file is refused
-/// for, with the same problem text (the rules live in spec/Values); an empty sphere list means the same on both sides.
+/// for, with the same problem text (the rules live in spec/Values); the sphere-list rule is shared too (protocol queries may be empty, walk files need sphere 0).
 /// </summary>
 public sealed class OneValidatorTests
 {
@@ -52,17 +52,14 @@ public sealed class OneValidatorTests
         Assert.Single(CorpusJson.Read(WalkFile.Replace("Y", "12", StringComparison.Ordinal).Replace("R", "1", StringComparison.Ordinal), "good.json").Walk!.Body);
     }
 
-    [Fact(DisplayName = "An empty sphere list is valid on both sides for open land (the query reads the position's own point, issue 18)")]
-    public void EmptySphereListsAgree()
+    [Fact(DisplayName = "An empty sphere list: a protocol query may be empty (it reads origin, issue 18), a walk file may not (sphere 0 is judged); one rule, one text")]
+    public void EmptySphereListsFollowOneRule()
     {
         string answer = new ProtocolServer(ReferenceAdapter.Instance).Answer("""{"op":"outside_cells","cell":"0xA9B40031","spheres":[],"origin":{"x":12,"y":12,"z":0.5}}""");
         Assert.Equal("{\"cells\":[\"0xA9B40001\"]}", answer); // (12, 12) lies in cell 1 of block A9B4
 
-        // CorpusEntry.From writes such a query as a walk with an empty body; reading it back once failed ("1 to 10000 spheres").
-        string written = CorpusJson.Write(CorpusEntry.From(new AcPhys.Spec.Cases.OutdoorCase(new AcPhys.Core.CellId(0xA9, 0xB4, 0x31), []) { Origin = new System.Numerics.Vector3(12, 12, 0.5f) }, "empty", null, "hand")!);
-        var walk = CorpusJson.Read(written, "empty.json").Walk!;
-        Assert.Empty(walk.Body);
-        Assert.Equal(12f, walk.Start.X);
+        var e = Assert.Throws<CorpusFormatException>(() => CorpusJson.Read(WalkFile.Replace("[{\"x\":0,\"y\":0,\"z\":0,\"r\":R}]", "[]", StringComparison.Ordinal).Replace("Y", "12", StringComparison.Ordinal), "bad.json"));
+        Assert.Contains("$.walk.body: expected an array of 1 to 10,000 spheres, got 0", e.Message, StringComparison.Ordinal);
     }
 
     [Fact(DisplayName = "More spheres than the shared limit are refused by both")]
@@ -72,7 +69,7 @@ public sealed class OneValidatorTests
         string answer = new ProtocolServer(ReferenceAdapter.Instance).Answer("{\"op\":\"outside_cells\",\"cell\":\"0xA9B40031\",\"spheres\":[" + many + "]}");
         Assert.Contains("expected an array of 0 to 10,000 spheres, got 10,001", answer, StringComparison.Ordinal);
         var e = Assert.Throws<CorpusFormatException>(() => CorpusJson.Read(WalkFile.Replace("[{\"x\":0,\"y\":0,\"z\":0,\"r\":R}]", "[" + many + "]", StringComparison.Ordinal).Replace("Y", "12", StringComparison.Ordinal), "bad.json"));
-        Assert.Contains("expected an array of 0 to 10,000 spheres, got 10,001", e.Message, StringComparison.Ordinal);
+        Assert.Contains("expected an array of 1 to 10,000 spheres, got 10,001", e.Message, StringComparison.Ordinal);
     }
 
     [Fact(DisplayName = "A scene file and a corpus file refuse a float32 overflow with the same text")]

@@ -159,7 +159,7 @@ public static class CorpusJson
 
             if (kind == "walk")
             {
-                return header with { Walk = WalkJson.Read(Prop(root, "walk", source), source, minSpheres: 0) };
+                return header with { Walk = WalkJson.Read(Prop(root, "walk", source), source) };
             }
 
             var caseElement = Prop(root, "case", source);

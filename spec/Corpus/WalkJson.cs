@@ -54,7 +54,7 @@ public static class WalkJson
     /// <summary>Reads and validates a walk object.</summary>
     /// <param name="e">The <c>walk</c> element.</param>
     /// <param name="source">File name for messages.</param>
-    /// <param name="minSpheres">The fewest body spheres: 0 for an open-land walk (its query then reads the position's own point, facts §3.3 step 3, as protocol v1's <c>origin</c>), 1 for a scene walk (sphere 0 decides the cell).</param>
+    /// <param name="minSpheres">The fewest body spheres (<see cref="Values.SphereList"/>): 1 for every walk file today, because the walk invariants judge sphere 0 (an empty body has no containing cell on the reference; a protocol query, by contrast, may be empty and then reads its <c>origin</c>).</param>
     /// <returns>The walk.</returns>
     /// <exception cref="CorpusFormatException">Any defect, with its JSON path.</exception>
     public static Walk Read(JsonElement e, string source, int minSpheres = 1)

@@ -11,7 +11,7 @@ public static class SphereList
 
     /// <summary>Returns what is wrong with a list's length, or null when it is valid.</summary>
     /// <param name="count">The number of spheres.</param>
-    /// <param name="min">The fewest allowed: 0 where an empty list reads the position's point, 1 where sphere 0 is needed (scene walks).</param>
+    /// <param name="min">The fewest allowed: 0 where an empty list reads the position's point, 1 where sphere 0 is judged (walk files).</param>
     /// <returns>The problem (no location), or null.</returns>
     public static string? Problem(int count, int min) =>
         count >= min && count <= Max ? null : string.Create(System.Globalization.CultureInfo.InvariantCulture, $"expected an array of {min} to {Max:N0} spheres, got {count:N0}");
