@@ -40,9 +40,14 @@ public sealed class BoundedLineReader
     /// <summary>Reads the next line.</summary>
     /// <returns>The line without its end, or null at end of input.</returns>
     /// <exception cref="LineTooLongException">The line is longer than <see cref="MaxBytes"/>; the next call reads the line after it.</exception>
-    public string? ReadLine()
+    public string? ReadLine() => ReadLineAsync().AsTask().GetAwaiter().GetResult();
+
+    /// <summary>Reads the next line without holding a thread while the peer is silent (the ProcessAdapter waits on it with a timeout).</summary>
+    /// <returns>The line without its end, or null at end of input.</returns>
+    /// <exception cref="LineTooLongException">The line is longer than <see cref="MaxBytes"/>; the next call reads the line after it.</exception>
+    public async ValueTask<string?> ReadLineAsync()
     {
-        if (skipping && !SkipRest())
+        if (skipping && !await SkipRestAsync().ConfigureAwait(false))
         {
             return null;
         }
@@ -50,7 +55,7 @@ public sealed class BoundedLineReader
         line.SetLength(0);
         while (true)
         {
-            if (start == end && !Fill())
+            if (start == end && !await FillAsync().ConfigureAwait(false))
             {
                 return line.Length == 0 ? null : Text();
             }
@@ -93,10 +98,10 @@ public sealed class BoundedLineReader
         return Encoding.UTF8.GetString(bytes);
     }
 
-    private bool Fill()
+    private async ValueTask<bool> FillAsync()
     {
         start = 0;
-        end = stream.Read(buffer, 0, buffer.Length);
+        end = await stream.ReadAsync(buffer.AsMemory(0, buffer.Length)).ConfigureAwait(false);
         if (!started && end > 0)
         {
             started = true;
@@ -106,15 +111,15 @@ public sealed class BoundedLineReader
             }
         }
 
-        return end > start || (end > 0 && Fill());
+        return end > start || (end > 0 && await FillAsync().ConfigureAwait(false));
     }
 
     // Skips to just after the next newline; false at end of input.
-    private bool SkipRest()
+    private async ValueTask<bool> SkipRestAsync()
     {
         while (true)
         {
-            if (start == end && !Fill())
+            if (start == end && !await FillAsync().ConfigureAwait(false))
             {
                 skipping = false;
                 return false;

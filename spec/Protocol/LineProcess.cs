@@ -117,7 +117,7 @@ internal sealed class LineProcess : IDisposable
         }
 
         var reader = answers!;
-        pending ??= Task.Run(reader.ReadLine);
+        pending ??= reader.ReadLineAsync().AsTask(); // asynchronous: no pool thread blocks while the child thinks
         bool answered;
         try
         {
