@@ -6,16 +6,24 @@ namespace AcPhys.Cli;
 
 /// <summary>
 /// Runs a command's body with the tool's error policy: bad input, unreadable files and implementations that cannot
-/// answer become a one-line message and exit 2; Ctrl-C (SIGINT) and SIGTERM stop the run with 130 / 143, never a stack trace.
+/// answer become a one-line message and exit 2; a bug of the tool is one line and exit 70 (the stack trace with
+/// <c>ACPHYS_DEBUG=1</c>); Ctrl-C (SIGINT) and SIGTERM stop the run with 130 / 143, never a stack trace.
 /// </summary>
 internal static class Guard
 {
+    private static Action? stopReport;
+
+    /// <summary>Registers what the running command prints when a signal stops it (its partial results).</summary>
+    /// <param name="report">Prints them; runs on the signal's thread while the work may still be going.</param>
+    public static void OnStop(Action report) => Volatile.Write(ref stopReport, report);
+
     /// <summary>Runs <paramref name="body"/> on a worker thread and maps its outcome to an exit code.</summary>
     /// <param name="verb">The command name, for messages.</param>
     /// <param name="body">The work; returns the exit code.</param>
     /// <returns>The exit code.</returns>
     public static int Run(string verb, Func<int> body)
     {
+        stopReport = null;
         // Not disposed on purpose: an interrupted worker may still signal them while the process is exiting.
         var done = new ManualResetEventSlim();
         var stopped = new ManualResetEventSlim();
@@ -37,6 +45,7 @@ internal static class Guard
         {
             try
             {
+                InternalErrorDrill.Check(verb);
                 exit = body();
             }
             catch (Exception e)
@@ -59,11 +68,23 @@ internal static class Guard
         {
             Terminal.RestoreCursor();
             Terminal.Error(verb, signalExit == ExitCodes.Terminated ? "terminated" : "interrupted");
+            try
+            {
+                Volatile.Read(ref stopReport)?.Invoke(); // what the command had finished (issue 19: a killed verify printed nothing)
+            }
+            catch (Exception e) when (e is IOException or InvalidOperationException)
+            {
+                Terminal.Error(verb, "could not print what had finished: " + e.Message);
+            }
+
             return signalExit;
         }
 
         return error is null ? exit : Report(verb, error);
     }
+
+    private static string FirstLine(string message) =>
+        AcPhys.Spec.Values.InputQuote.Brief(message.Split('\n', 2)[0].TrimEnd('\r'), 200);
 
     private static int Report(string verb, Exception error)
     {
@@ -79,13 +100,15 @@ internal static class Guard
                 Terminal.Error(verb, "the implementation could not answer: " + error.Message);
                 break;
             default:
-                Terminal.Error(verb, $"internal error: {error.GetType().Name}: {error.Message} (set ACPHYS_DEBUG=1 for the stack trace)");
-                if (Environment.GetEnvironmentVariable("ACPHYS_DEBUG") is "1" or "true")
+                // A bug of the tool: one line for a user (the exception's message cut, it may quote input), the whole trace for a developer.
+                bool debug = Environment.GetEnvironmentVariable("ACPHYS_DEBUG") is "1" or "true";
+                Terminal.Error(verb, $"internal error: {error.GetType().Name}: {FirstLine(error.Message)}{(debug ? string.Empty : " (set ACPHYS_DEBUG=1 for the stack trace)")}");
+                if (debug)
                 {
                     Console.Error.WriteLine(error);
                 }
 
-                break;
+                return ExitCodes.InternalError;
         }
 
         return ExitCodes.ToolError;

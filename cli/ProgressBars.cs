@@ -3,21 +3,28 @@ using Spectre.Console;
 namespace AcPhys.Cli;
 
 /// <summary>
-/// A progress bar on stderr for long runs (one step per invariant or check), shown only on an interactive terminal;
-/// CI logs and <c>--quiet</c> get none.
+/// A progress bar on stderr for long runs (one step per invariant or check) on an interactive terminal; a log (stderr
+/// redirected) gets a line every 30 s instead (<see cref="ProgressLog"/>); <c>--quiet</c> gets neither.
 /// </summary>
 internal static class ProgressBars
 {
-    /// <summary>Runs <paramref name="work"/> with a bar of <paramref name="total"/> steps (or plainly when there is no terminal).</summary>
+    /// <summary>Runs <paramref name="work"/> with a bar of <paramref name="total"/> steps (or progress lines when there is no terminal).</summary>
     /// <param name="title">What is running.</param>
     /// <param name="total">The number of steps.</param>
     /// <param name="work">The work; calls its argument after each step with what just finished.</param>
     /// <param name="enabled">False to run without a bar (<c>--quiet</c>).</param>
     public static void Run(string title, int total, Action<Action<string>> work, bool enabled = true)
     {
-        if (!enabled || !Terminal.ShowsProgress)
+        if (!enabled)
         {
             work(_ => { });
+            return;
+        }
+
+        if (!Terminal.ShowsProgress)
+        {
+            using var log = new ProgressLog(title, total);
+            work(log.Advance);
             return;
         }
 

@@ -42,7 +42,7 @@ public sealed class ChildProcessTests
         try
         {
             Assert.True(Poll.Until(TimeSpan.FromSeconds(60), () => Matching(sleep).Any(c => c.StartsWith(sleep, StringComparison.Ordinal))), "the implementation never started");
-            Send(signal, acphys.Id);
+            Signals.Send(signal, acphys.Id);
             Assert.True(acphys.WaitForExit(TimeSpan.FromSeconds(30)), "acphys did not exit");
             bool gone = Poll.Until(TimeSpan.FromSeconds(seconds), () => Matching(sleep).Count == 0);
             Assert.True(gone, $"after SIGKILL/TERM/INT ({signal}) these survived {seconds} s: " + string.Join(" | ", Matching(sleep)));
@@ -54,12 +54,6 @@ public sealed class ChildProcessTests
                 acphys.Kill(entireProcessTree: true);
             }
         }
-    }
-
-    private static void Send(string signal, int pid)
-    {
-        using var kill = Process.Start("kill", ["-s", signal, pid.ToString(CultureInfo.InvariantCulture)]);
-        kill.WaitForExit();
     }
 
 

@@ -232,6 +232,6 @@ public sealed class WireTests
     {
         // Once the last "op" won silently.
         var server = new ProtocolServer(ReferenceAdapter.Instance);
-        Assert.Equal("{\"error\":\"malformed request: $.op: duplicate key (each key once per object)\"}", server.Answer("{\"op\":\"hello\",\"op\":\"frob\"}"));
+        Assert.Equal("{\"error\":\"malformed request: $.op: duplicate key \\\"op\\\" (each key once per object)\"}", server.Answer("{\"op\":\"hello\",\"op\":\"frob\"}"));
     }
 }

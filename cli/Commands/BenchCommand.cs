@@ -37,10 +37,14 @@ internal static class BenchCommand
 
         Terminal.Line($"<!-- acphys bench --round-ms {roundMs} --rounds {rounds}; {Machine.Describe()} at start; .NET {Environment.Version} -->");
         var rows = new List<BenchRow>();
-        foreach (var op in ops)
+        ProgressBars.Run("bench", ops.Count, advance =>
         {
-            rows.Add(MicroBench.Measure(op, roundMs, rounds));
-        }
+            foreach (var op in ops)
+            {
+                rows.Add(MicroBench.Measure(op, roundMs, rounds));
+                advance($"{op.Group} / {op.Name} / {op.Mode}");
+            }
+        });
 
         Markdown.Table(
             ["group", "op", "mode", "ns/op (median)", "ns/op (min)", "B/op"],

@@ -109,7 +109,8 @@ internal static class BiteCommand
     {
         if (!Terminal.ShowsProgress)
         {
-            return BiteRunner.Run(bugs, profile, seeds, except: except);
+            using var log = new ProgressLog("bite", bugs.Count);
+            return BiteRunner.Run(bugs, profile, seeds, progress: row => log.Advance($"{row.Bug.Id} {row.Status.ToString().ToLowerInvariant()}"), except: except);
         }
 
         BiteReport? report = null;

@@ -55,7 +55,7 @@ internal static class RenderCommand
         }
 
         var check = WalkReplay.Check(impl, entry.Walk!);
-        OutputPath.Write(output, WalkSvg.Render(entry.Walk!, check, $"{entry.Title} — {impl.Name}"));
+        OutputPath.Write(output, WalkSvg.Render(entry.Walk!, check, $"{entry.Title} — {impl.Name}", entry.Invariant));
         Said(output, $"render: wrote {output} ({check.Trace.Count - 1} steps, {(check.FirstViolatingStep is int s ? $"first violation at step {s}" : "no violation")})");
         return ExitCodes.Ok;
     }

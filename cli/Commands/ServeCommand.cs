@@ -74,10 +74,10 @@ internal static class ServeCommand
             }
         }
 
-        var utf8 = new UTF8Encoding(false);
-        using var input = new StreamReader(Console.OpenStandardInput(), utf8);
-        using var output = new StreamWriter(Console.OpenStandardOutput(), utf8) { NewLine = "\n" };
-        new ProtocolServer(impl) { LoadScenes = !noLoadScene, DatRecords = !noDatRecords }.Serve(input, output);
+        int maxLine = Impl.LineLimitSetting.Read();
+        using var input = Console.OpenStandardInput();
+        using var output = new StreamWriter(Console.OpenStandardOutput(), new UTF8Encoding(false)) { NewLine = "\n" };
+        new ProtocolServer(impl) { LoadScenes = !noLoadScene, DatRecords = !noDatRecords }.Serve(input, output, maxLine);
         return ExitCodes.Ok;
     }
 }

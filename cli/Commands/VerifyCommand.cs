@@ -172,7 +172,21 @@ internal static class VerifyCommand
         }
 
         var stopwatch = Stopwatch.StartNew();
-        var results = RunWithProgress(impl, settings);
+        var finished = new List<InvariantResult>();
+        Guard.OnStop(() =>
+        {
+            lock (finished)
+            {
+                report.WritePartialSummary([.. finished], Total(settings), stopwatch.Elapsed);
+            }
+        });
+        var results = RunWithProgress(impl, settings, r =>
+        {
+            lock (finished)
+            {
+                finished.Add(r);
+            }
+        });
         stopwatch.Stop();
 
         if (!settings.Quiet)
@@ -193,21 +207,21 @@ internal static class VerifyCommand
         return results.Any(r => r.Status == ResultStatus.Failed) ? ExitCodes.Violated : ExitCodes.Ok;
     }
 
-    private static IReadOnlyList<InvariantResult> RunWithProgress(ICellPhysics impl, VerifySettings settings)
+    private static int Total(VerifySettings settings) => settings.Only.Count == 0 ? InvariantCatalogue.All.Count : settings.Only.Count;
+
+    private static IReadOnlyList<InvariantResult> RunWithProgress(ICellPhysics impl, VerifySettings settings, Action<InvariantResult> finished)
     {
         var only = settings.Only.Count == 0 ? null : settings.Only;
-        if (settings.Quiet || !Terminal.ShowsProgress)
-        {
-            return CatalogueRunner.RunCatalogue(impl, settings.Profile, only, settings.FixedSeed);
-        }
-
-        int total = only?.Count ?? InvariantCatalogue.All.Count;
         IReadOnlyList<InvariantResult> results = [];
-        ProgressBars.Run($"verify {impl.Name}", total, advance =>
+        ProgressBars.Run($"verify {impl.Name}", Total(settings), advance =>
         {
             results = CatalogueRunner.RunCatalogue(impl, settings.Profile, only, settings.FixedSeed, result =>
-                advance($"{result.Invariant.Id} {VerifyReport.Verdict(result.Status)}"));
-        });
+            {
+                finished(result);
+                advance($"{result.Invariant.Id} {VerifyReport.Verdict(result.Status)}");
+            });
+        },
+        enabled: !settings.Quiet);
         return results;
     }
 }

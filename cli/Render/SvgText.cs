@@ -21,4 +21,29 @@ internal static class SvgText
     /// <param name="max">Most characters.</param>
     /// <returns>The text.</returns>
     public static string Clip(string s, int max) => s.Length <= max ? s : s[..Math.Max(max - 1, 1)] + "…";
+
+    /// <summary>Breaks text into lines of at most <paramref name="max"/> characters at spaces (a longer word is split), so header lines wrap instead of being cut.</summary>
+    /// <param name="s">The text.</param>
+    /// <param name="max">Most characters per line.</param>
+    /// <returns>The lines, at least one.</returns>
+    public static List<string> Wrap(string s, int max)
+    {
+        max = Math.Max(max, 8);
+        var lines = new List<string>();
+        string rest = s;
+        while (rest.Length > max)
+        {
+            int cut = rest.LastIndexOf(' ', max);
+            if (cut <= 0)
+            {
+                cut = max;
+            }
+
+            lines.Add(rest[..cut].TrimEnd());
+            rest = rest[cut..].TrimStart();
+        }
+
+        lines.Add(rest);
+        return lines;
+    }
 }

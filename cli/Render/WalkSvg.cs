@@ -17,15 +17,16 @@ internal static class WalkSvg
     private const double MaxPixels = 1400;
     private const double MaxSpan = 70_000; // metres: more than the whole landscape
     private const double MinPixels = 720;
-    private const double Header = 52;
+    private const double HeaderLine = 16;
     private const double LegendLine = 14;
 
     /// <summary>Renders the SVG document.</summary>
     /// <param name="walk">The walk.</param>
     /// <param name="check">Its trace and violations.</param>
-    /// <param name="title">A caption.</param>
+    /// <param name="title">A caption (wrapped, never cut).</param>
+    /// <param name="fileInvariant">The invariant the file says found the walk, or null; named in the header when this run does not break it.</param>
     /// <returns>The SVG text.</returns>
-    public static string Render(Walk walk, WalkCheck check, string title)
+    public static string Render(Walk walk, WalkCheck check, string title, string? fileInvariant = null)
     {
         var o = walk.Body.Count > 0 ? walk.Body[0].Offset : default;
         var points = check.Trace.Select(s => (X: s.WorldX + o.X, Y: s.WorldY + o.Y)).ToList();
@@ -47,14 +48,26 @@ internal static class WalkSvg
         double Py(double y) => (maxY - y) * scale;
         string F(double v) => v.ToString("0.###", CultureInfo.InvariantCulture);
 
-        var sb = new StringBuilder();
-        sb.Append($"<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{F(width)}\" height=\"{F(Header + height + legend)}\" viewBox=\"0 {F(-Header)} {F(width)} {F(Header + height + legend)}\" font-family=\"monospace\" font-size=\"11\">\n");
-        sb.Append($"<title>{SvgText.Escape(title)}</title>\n<rect x=\"0\" y=\"{F(-Header)}\" width=\"{F(width)}\" height=\"{F(Header + height + legend)}\" fill=\"white\"/>\n");
+        // header: the title, then every broken invariant with its first step, both wrapped to the picture's width (issue 19).
+        int chars = (int)(width / 7);
         int? bad = check.FirstViolatingStep;
-        string headline = $"{check.Trace.Count - 1} steps; " + (bad is int b ? $"first violation at step {b}: {string.Join(", ", check.PerStep[b].Select(v => v.InvariantId).Distinct())}" : "no violation");
-        sb.Append($"<text x=\"4\" y=\"{F(-Header + 16)}\" font-weight=\"bold\">{SvgText.Escape(SvgText.Clip(title, (int)(width / 7)))}</text>\n");
-        sb.Append($"<text x=\"4\" y=\"{F(-Header + 32)}\">{SvgText.Escape(SvgText.Clip(headline, (int)(width / 7)))}</text>\n");
-        sb.Append($"<text x=\"4\" y=\"{F(-Header + 46)}\" fill=\"#555\">green: containing cell per step; red outline: the violating step's containing cell; dashed: the cell under its centre</text>\n");
+        var titleLines = SvgText.Wrap(title, chars);
+        var headlineLines = SvgText.Wrap(WalkHeadline.For(check.Trace.Count - 1, check.PerStep, fileInvariant), chars);
+        var keyLines = SvgText.Wrap("green: containing cell per step; red outline: the violating step's containing cell; dashed: the cell under its centre", chars);
+        double header = ((titleLines.Count + headlineLines.Count + keyLines.Count) * HeaderLine) + 6;
+
+        var sb = new StringBuilder();
+        sb.Append($"<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{F(width)}\" height=\"{F(header + height + legend)}\" viewBox=\"0 {F(-header)} {F(width)} {F(header + height + legend)}\" font-family=\"monospace\" font-size=\"11\">\n");
+        sb.Append($"<title>{SvgText.Escape(title)}</title>\n<rect x=\"0\" y=\"{F(-header)}\" width=\"{F(width)}\" height=\"{F(header + height + legend)}\" fill=\"white\"/>\n");
+        double hy = -header;
+        foreach (var (lines, style) in new[] { (titleLines, " class=\"title\" font-weight=\"bold\""), (headlineLines, $" class=\"headline\" fill=\"{(bad is null ? "#000" : "red")}\""), (keyLines, " fill=\"#555\"") })
+        {
+            foreach (string line in lines)
+            {
+                hy += HeaderLine;
+                sb.Append($"<text x=\"4\" y=\"{F(hy)}\"{style} xml:space=\"preserve\">{SvgText.Escape(line)}</text>\n");
+            }
+        }
 
         // Containing cell of every step (drawn first, under the grid); the violating step's expected cell in red.
         foreach (var step in check.Trace)

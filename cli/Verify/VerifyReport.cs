@@ -225,6 +225,22 @@ internal sealed class VerifyReport(VerifySettings settings, ICellPhysics impl)
         Terminal.Line($"verify: {results.Count} invariant{(results.Count == 1 ? string.Empty : "s")}, {passed} passed, {failed} failed, {notTested} not tested ({string.Join(", ", details)})");
     }
 
+    /// <summary>Writes what a run stopped by a signal had finished: the failures found so far and one summary line.</summary>
+    /// <param name="finished">The invariants that finished.</param>
+    /// <param name="total">How many the run would have checked.</param>
+    /// <param name="elapsed">Wall time until the signal.</param>
+    public void WritePartialSummary(IReadOnlyList<InvariantResult> finished, int total, TimeSpan elapsed)
+    {
+        foreach (var r in finished.Where(r => r.Status == ResultStatus.Failed))
+        {
+            Terminal.Line($"FAILED {r.Invariant.Id} (before the stop; run it again with --only {r.Invariant.Id} for its replay line)");
+        }
+
+        Terminal.Line($"verify: stopped after {finished.Count} of {total} invariants, {finished.Count(r => r.Status == ResultStatus.Passed)} passed, "
+            + $"{finished.Count(r => r.Status == ResultStatus.Failed)} failed, {finished.Count(r => r.Status == ResultStatus.NotTested)} not tested, the rest not run "
+            + $"(profile {settings.Profile.Name}{(settings.FixedSeed is null ? $", base seed {Fmt.Decimal(settings.BaseSeed)}" : string.Empty)}, {Fmt.Seconds(elapsed)})");
+    }
+
     /// <summary>Writes the <c>--junit</c> and <c>--markdown</c> files, when asked for (atomically).</summary>
     /// <param name="results">The results.</param>
     /// <param name="elapsed">Wall time of the run.</param>

@@ -26,8 +26,30 @@ internal static class Acphys
     /// <returns>Exit code, stdout, stderr and wall time.</returns>
     public static Run Run(IEnumerable<string> args, IReadOnlyDictionary<string, string>? environment = null)
     {
+        var info = Info(args, environment);
+        var stopwatch = Stopwatch.StartNew();
+        using var process = Process.Start(info)!;
+        var stdout = process.StandardOutput.ReadToEndAsync();
+        var stderr = process.StandardError.ReadToEndAsync();
+        if (!process.WaitForExit(TimeSpan.FromMinutes(6)))
+        {
+            process.Kill(entireProcessTree: true);
+            throw new TimeoutException("acphys " + string.Join(' ', info.ArgumentList) + " ran for more than six minutes");
+        }
+
+        return new Run(process.ExitCode, stdout.Result, stderr.Result, stopwatch.Elapsed);
+    }
+
+    /// <summary>Describes a run of acphys (stdout and stderr redirected; stdin too when asked), for tests that drive the process themselves.</summary>
+    /// <param name="args">The arguments.</param>
+    /// <param name="environment">Extra environment variables.</param>
+    /// <param name="stdin">True to redirect stdin.</param>
+    /// <returns>The start info.</returns>
+    public static ProcessStartInfo Info(IEnumerable<string> args, IReadOnlyDictionary<string, string>? environment = null, bool stdin = false)
+    {
         var info = new ProcessStartInfo("dotnet")
         {
+            RedirectStandardInput = stdin,
             RedirectStandardOutput = true,
             RedirectStandardError = true,
             UseShellExecute = false,
@@ -49,17 +71,7 @@ internal static class Acphys
             info.Environment[k] = v;
         }
 
-        var stopwatch = Stopwatch.StartNew();
-        using var process = Process.Start(info)!;
-        var stdout = process.StandardOutput.ReadToEndAsync();
-        var stderr = process.StandardError.ReadToEndAsync();
-        if (!process.WaitForExit(TimeSpan.FromMinutes(6)))
-        {
-            process.Kill(entireProcessTree: true);
-            throw new TimeoutException("acphys " + string.Join(' ', info.ArgumentList) + " ran for more than six minutes");
-        }
-
-        return new Run(process.ExitCode, stdout.Result, stderr.Result, stopwatch.Elapsed);
+        return info;
     }
 }
 

@@ -21,7 +21,7 @@ public sealed class BadScenes
         { "cell in an undeclared block", "cells[0].id=\"0x10100100\"", "lies in block 0x1010, which the scene does not declare" },
         { "non-unit quaternion", "cells[0].frame.rotation=[1,0,0,0.1]", "$.cells[0].frame.rotation: quaternion (W, X, Y, Z) has length" },
         { "degenerate plane", "cells[0].portals[0].plane.n=[0,0,0]", "$.cells[0].portals[0].plane.n: degenerate plane" },
-        { "non-finite plane", "cells[0].portals[0].plane.d=1e39", "$.cells[0].portals[0].plane.d: non-finite value" },
+        { "non-finite plane", "cells[0].portals[0].plane.d=1e39", "$.cells[0].portals[0].plane.d: number overflows float32" },
         { "unknown cell in a portal", "cells[0].portals[1].other=\"0x0150\"", "$.cells[0].portals[1].other: unknown cell 0xA9B40150" },
         { "portal to itself", "cells[0].portals[1].other=\"0x0100\"", "$.cells[0].portals[1].other: a portal of 0xA9B40100 leads to itself" },
         { "portal other not an env low word", "cells[0].portals[1].other=\"0x0013\"", "$.cells[0].portals[1].other: 0x0013 is not an env cell low word" },

@@ -115,7 +115,7 @@ public static class CorpusJson
 
             if (JsonKeys.FirstDuplicate(root) is { } duplicate)
             {
-                throw new CorpusFormatException($"{source}: {duplicate}: duplicate key \"{duplicate[(duplicate.LastIndexOf('.') + 1)..]}\" (each key once per object)");
+                throw new CorpusFormatException($"{source}: {JsonKeys.Message(duplicate)}");
             }
 
             Require(Str(root, "format", source) == FormatName, source, "$.format", $"expected \"{FormatName}\"");
@@ -171,7 +171,7 @@ public static class CorpusJson
             var caseElement = Prop(root, "case", source);
             Require(caseElement.ValueKind == JsonValueKind.Object, source, "$.case", "expected an object");
             string cellText = Str(caseElement, "cell", source, "$.case");
-            Require(CellIdText.TryParse(cellText, out var cell), source, "$.case.cell", $"expected \"0x\" and 8 hex digits, got \"{cellText}\"");
+            Require(CellIdText.TryParse(cellText, out var cell), source, "$.case.cell", $"expected \"0x\" and 8 hex digits, got \"{Values.InputQuote.Brief(cellText)}\"");
             float x = Float(caseElement, "x", source);
             float y = Float(caseElement, "y", source);
             var lc = Prop(caseElement, "lcoord", source, "$.case");
@@ -221,23 +221,8 @@ public static class CorpusJson
     internal static float Float(JsonElement parent, string name, string source, string at = "$.case")
     {
         var e = Prop(parent, name, source, at);
-        string path = at + "." + name;
-        if (e.ValueKind == JsonValueKind.String)
-        {
-            return Text(e, source, path) switch
-            {
-                "NaN" => float.NaN,
-                "Infinity" => float.PositiveInfinity,
-                "-Infinity" => float.NegativeInfinity,
-                var s => throw new CorpusFormatException($"{source}: {path}: expected a number or \"NaN\"/\"Infinity\"/\"-Infinity\", got \"{s}\""),
-            };
-        }
-
-        Require(e.ValueKind == JsonValueKind.Number, source, path, "expected a number");
-
-        // Parsed straight to float32 (one rounding), so text written by FloatText round-trips to the same bits.
-        float f = float.Parse(e.GetRawText(), System.Globalization.NumberStyles.Float, System.Globalization.CultureInfo.InvariantCulture);
-        Require(float.IsFinite(f), source, path, "number overflows float32 (write \"Infinity\" if that is meant)");
+        _ = Values.Float32Json.TryRead(e, nonFiniteNames: true, out float f, out string? problem);
+        Refuse(problem, source, at + "." + name);
         return f;
     }
 
@@ -283,6 +268,15 @@ public static class CorpusJson
         catch (InvalidOperationException)
         {
             throw new CorpusFormatException($"{source}: {path}: not valid text (invalid UTF-8 or a lone UTF-16 surrogate)");
+        }
+    }
+
+    /// <summary>Refuses a value the shared rules (spec/Values) found a problem with.</summary>
+    internal static void Refuse(string? problem, string source, string path)
+    {
+        if (problem is not null)
+        {
+            throw new CorpusFormatException($"{source}: {path}: {problem}");
         }
     }
 

@@ -13,6 +13,12 @@ public static class JsonKeys
     /// <returns>The path of the second occurrence, or null when every object's keys are distinct.</returns>
     public static string? FirstDuplicate(JsonElement element) => Find(element, "$");
 
+    /// <summary>Returns the message for a duplicate key found by <see cref="FirstDuplicate"/>, the same in every reader.</summary>
+    /// <param name="path">The key's JSON path.</param>
+    /// <returns>E.g. <c>$.walk.kind: duplicate key "kind" (each key once per object)</c>.</returns>
+    public static string Message(string path) =>
+        $"{path}: duplicate key \"{Values.InputQuote.Brief(path[(path.LastIndexOf('.') + 1)..])}\" (each key once per object)";
+
     private static string? Find(JsonElement element, string path)
     {
         switch (element.ValueKind)

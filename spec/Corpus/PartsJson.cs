@@ -60,7 +60,7 @@ public static class PartsJson
             string at = $"$.parts[{i}]";
             CorpusJson.Require(p.ValueKind == JsonValueKind.Object, source, at, "expected an object");
             string cellText = CorpusJson.Str(p, "cell", source, at);
-            CorpusJson.Require(CellIdText.TryParse(cellText, out var cell), source, at + ".cell", $"expected \"0x\" and 8 hex digits, got \"{cellText}\"");
+            CorpusJson.Require(CellIdText.TryParse(cellText, out var cell), source, at + ".cell", $"expected \"0x\" and 8 hex digits, got \"{Values.InputQuote.Brief(cellText)}\"");
             var origin = ReadVector(p, "origin", source, at);
             var r = Obj(p, "rotation", source, at);
             var rotation = new Quaternion(Finite(r, "x", source, at + ".rotation"), Finite(r, "y", source, at + ".rotation"), Finite(r, "z", source, at + ".rotation"), Finite(r, "w", source, at + ".rotation"));
@@ -68,8 +68,8 @@ public static class PartsJson
             var min = ReadVector(p, "min", source, at);
             var max = ReadVector(p, "max", source, at);
             CorpusJson.Require(min.X <= max.X && min.Y <= max.Y && min.Z <= max.Z, source, at + ".min", "every component must be ≤ the same component of max");
-            float radius = Finite(p, "radius", source, at);
-            CorpusJson.Require(radius >= 0, source, at + ".radius", "radius must be ≥ 0");
+            float radius = CorpusJson.Float(p, "radius", source, at);
+            CorpusJson.Refuse(Values.SphereRadius.Problem(radius), source, at + ".radius");
             var flag = CorpusJson.Prop(p, "always2d", source, at);
             CorpusJson.Require(flag.ValueKind is JsonValueKind.True or JsonValueKind.False, source, at + ".always2d", "expected true or false");
             parts.Add(new Part(cell, new Frame(origin, rotation), new Box(min, max), radius, flag.GetBoolean()));

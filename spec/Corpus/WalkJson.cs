@@ -11,8 +11,8 @@ namespace AcPhys.Spec.Corpus;
 /// </summary>
 public static class WalkJson
 {
-    /// <summary>Largest number of steps or spheres a file may hold (bounded input).</summary>
-    public const int MaxItems = 10_000;
+    /// <summary>Largest number of steps or spheres a file may hold (bounded input; the sphere rule is <see cref="Values.SphereList"/>).</summary>
+    public const int MaxItems = Values.SphereList.Max;
 
     /// <summary>Writes the walk as the property <c>walk</c>.</summary>
     /// <param name="w">The writer, inside the entry object.</param>
@@ -54,30 +54,32 @@ public static class WalkJson
     /// <summary>Reads and validates a walk object.</summary>
     /// <param name="e">The <c>walk</c> element.</param>
     /// <param name="source">File name for messages.</param>
+    /// <param name="minSpheres">The fewest body spheres (<see cref="Values.SphereList"/>): 1 for every walk file today, because the walk invariants judge sphere 0 (an empty body has no containing cell on the reference; a protocol query, by contrast, may be empty and then reads its <c>origin</c>).</param>
     /// <returns>The walk.</returns>
     /// <exception cref="CorpusFormatException">Any defect, with its JSON path.</exception>
-    public static Walk Read(JsonElement e, string source)
+    public static Walk Read(JsonElement e, string source, int minSpheres = 1)
     {
         CorpusJson.Require(e.ValueKind == JsonValueKind.Object, source, "$.walk", "expected an object");
         var start = CorpusJson.Prop(e, "start", source, "$.walk");
         CorpusJson.Require(start.ValueKind == JsonValueKind.Object, source, "$.walk.start", "expected an object");
         string cellText = CorpusJson.Str(start, "cell", source, "$.walk.start");
-        CorpusJson.Require(CellIdText.TryParse(cellText, out var cell), source, "$.walk.start.cell", $"expected \"0x\" and 8 hex digits, got \"{cellText}\"");
+        CorpusJson.Require(CellIdText.TryParse(cellText, out var cell), source, "$.walk.start.cell", $"expected \"0x\" and 8 hex digits, got \"{Values.InputQuote.Brief(cellText)}\"");
         var position = new Vector3(
             Finite(start, "x", source, "$.walk.start"),
             Finite(start, "y", source, "$.walk.start"),
             Finite(start, "z", source, "$.walk.start"));
 
         var body = CorpusJson.Prop(e, "body", source, "$.walk");
-        CorpusJson.Require(body.ValueKind == JsonValueKind.Array && body.GetArrayLength() is > 0 and <= MaxItems, source, "$.walk.body", $"expected an array of 1 to {MaxItems} spheres");
+        CorpusJson.Require(body.ValueKind == JsonValueKind.Array, source, "$.walk.body", "expected an array of spheres");
+        CorpusJson.Refuse(Values.SphereList.Problem(body.GetArrayLength(), minSpheres), source, "$.walk.body");
         var spheres = new List<BodySphere>();
         int i = 0;
         foreach (var b in body.EnumerateArray())
         {
             string at = $"$.walk.body[{i}]";
             CorpusJson.Require(b.ValueKind == JsonValueKind.Object, source, at, "expected an object");
-            float r = Finite(b, "r", source, at);
-            CorpusJson.Require(r >= 0, source, at + ".r", "radius must be ≥ 0");
+            float r = CorpusJson.Float(b, "r", source, at);
+            CorpusJson.Refuse(Values.SphereRadius.Problem(r), source, at + ".r");
             spheres.Add(new BodySphere(new Vector3(Finite(b, "x", source, at), Finite(b, "y", source, at), Finite(b, "z", source, at)), r));
             i++;
         }
@@ -107,9 +109,8 @@ public static class WalkJson
 
     private static float Component(JsonElement e, string source, string path)
     {
-        CorpusJson.Require(e.ValueKind == JsonValueKind.Number, source, path, "expected a number");
-        float v = float.Parse(e.GetRawText(), System.Globalization.NumberStyles.Float, System.Globalization.CultureInfo.InvariantCulture);
-        CorpusJson.Require(float.IsFinite(v), source, path, "number overflows float32");
+        _ = Values.Float32Json.TryRead(e, nonFiniteNames: false, out float v, out string? problem);
+        CorpusJson.Refuse(problem, source, path);
         return v;
     }
 }

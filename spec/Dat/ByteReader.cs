@@ -115,7 +115,8 @@ public sealed class ByteReader(byte[] data, string record)
         var c = Vec(field + ".center");
         int at = Position;
         float r = F32(field + ".radius");
-        Require(float.IsFinite(r), field + ".radius", at, "non-finite value");
+        string? bad = Values.SphereRadius.Problem(r);
+        Require(bad is null, field + ".radius", at, bad ?? string.Empty);
         return new Sphere(c, r);
     }
 

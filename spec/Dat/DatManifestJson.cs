@@ -146,7 +146,7 @@ public static class DatManifestJson
             var e = items[i];
             Require(e.ValueKind == JsonValueKind.Object, at, "expected an object");
             string idText = Str(e, "id", source, at);
-            Require(idText.StartsWith("0x", StringComparison.Ordinal) && idText.Length == 10 && uint.TryParse(idText.AsSpan(2), NumberStyles.AllowHexSpecifier, CultureInfo.InvariantCulture, out _), at + ".id", $"expected \"0x\" and 8 hex digits, got \"{idText}\"");
+            Require(idText.StartsWith("0x", StringComparison.Ordinal) && idText.Length == 10 && uint.TryParse(idText.AsSpan(2), NumberStyles.AllowHexSpecifier, CultureInfo.InvariantCulture, out _), at + ".id", $"expected \"0x\" and 8 hex digits, got \"{Values.InputQuote.Brief(idText)}\"");
             uint id = uint.Parse(idText.AsSpan(2), NumberStyles.AllowHexSpecifier, CultureInfo.InvariantCulture);
             string dat = Str(e, "dat", source, at);
             Require(dat is "cell" or "portal", at + ".dat", "expected \"cell\" or \"portal\"");
@@ -235,7 +235,7 @@ public static class DatManifestJson
         string text = Text(e, path, source);
         if (!(text.StartsWith("0x", StringComparison.Ordinal) && text.Length == 6 && ushort.TryParse(text.AsSpan(2), NumberStyles.AllowHexSpecifier, CultureInfo.InvariantCulture, out ushort v)))
         {
-            throw new DatFormatException($"{source}: {path}: expected a block id \"0x\" and 4 hex digits, got \"{text}\"");
+            throw new DatFormatException($"{source}: {path}: expected a block id \"0x\" and 4 hex digits, got \"{Values.InputQuote.Brief(text)}\"");
         }
 
         return new LandblockId(v);
@@ -246,7 +246,7 @@ public static class DatManifestJson
         string text = Text(e, path, source);
         if (!CellIdText.TryParse(text, out var id))
         {
-            throw new DatFormatException($"{source}: {path}: expected a cell id \"0x\" and 8 hex digits, got \"{text}\"");
+            throw new DatFormatException($"{source}: {path}: expected a cell id \"0x\" and 8 hex digits, got \"{Values.InputQuote.Brief(text)}\"");
         }
 
         return id;

@@ -76,6 +76,13 @@ public static class OutdoorGens
     {
         float v = edge < 2 ? x : y;
         float inCell = v - (24f * MathF.Floor(v / 24f));
+        if (inCell < 0)
+        {
+            // v is a tiny negative (−1 ULP of 0): v / 24 underflows to −0, so the floor misses the cell west of the line.
+            // Its in-cell coordinate 24 + v rounds to 24; a negative radius (−1.4e-45) is no body (spec/Values/SphereRadius).
+            inCell += 24f;
+        }
+
         float r = edge % 2 == 0 ? inCell : 24f - inCell;
         return new Sphere(new Vector3(x, y, 0.5f), r == 0 ? 24f : r);
     }

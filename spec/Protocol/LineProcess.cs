@@ -31,6 +31,7 @@ internal sealed class LineProcess : IDisposable
     private readonly ConcurrentQueue<string> tail = new();
     private readonly Action<string>? stderrSink;
     private static int exitHooked;
+    private BoundedLineReader? answers;
     private Task<string?>? pending;
     private bool dead;
     private int group;
@@ -48,9 +49,10 @@ internal sealed class LineProcess : IDisposable
     /// <summary>Starts <paramref name="commandLine"/> through the platform shell.</summary>
     /// <param name="commandLine">The command line, as typed in a shell.</param>
     /// <param name="stderrSink">Receives each stderr line of the child, or null to only keep the tail.</param>
+    /// <param name="maxLineBytes">The most bytes of one answer line (<see cref="BoundedLineReader"/>).</param>
     /// <returns>The running process.</returns>
     /// <exception cref="AdapterFailureException">It could not be started.</exception>
-    public static LineProcess Start(string commandLine, Action<string>? stderrSink)
+    public static LineProcess Start(string commandLine, Action<string>? stderrSink, int maxLineBytes = BoundedLineReader.DefaultMaxBytes)
     {
         bool grouped = !OperatingSystem.IsWindows() && File.Exists("/usr/bin/setsid");
         var info = OperatingSystem.IsWindows()
@@ -88,6 +90,7 @@ internal sealed class LineProcess : IDisposable
 
         process.BeginErrorReadLine();
         process.StandardInput.AutoFlush = true;
+        child.answers = new BoundedLineReader(process.StandardOutput.BaseStream, maxLineBytes);
         return child;
     }
 
@@ -113,11 +116,18 @@ internal sealed class LineProcess : IDisposable
             throw Died($"could not send '{what}' (the pipe is closed)", e);
         }
 
-        pending ??= process.StandardOutput.ReadLineAsync();
+        var reader = answers!;
+        pending ??= reader.ReadLineAsync().AsTask(); // asynchronous: no pool thread blocks while the child thinks
         bool answered;
         try
         {
             answered = pending.Wait(timeout);
+        }
+        catch (AggregateException e) when (e.InnerException is LineTooLongException tooLong)
+        {
+            dead = true;
+            Kill();
+            throw new AdapterFailureException($"'{commandLine}' answered '{what}' with a {tooLong.Message}; it was stopped");
         }
         catch (AggregateException e)
         {

@@ -61,7 +61,7 @@ public static class PartWire
             Wire.ReadCell(p, "cell"),
             new Frame(Wire.ReadVector(p, "origin"), rotation),
             new Box(Wire.ReadVector(p, "min"), Wire.ReadVector(p, "max")),
-            Wire.ReadFloat(p, "r"),
+            Wire.ReadRadius(p, "r"),
             Wire.ReadBool(p, "always2d"));
     }
 }

@@ -62,7 +62,7 @@ public sealed class ProcessAdapter : ICellPhysics, IDisposable
     public static ProcessAdapter Start(string commandLine, ProcessAdapterOptions? options = null)
     {
         options ??= new ProcessAdapterOptions();
-        var child = LineProcess.Start(commandLine, options.StderrSink);
+        var child = LineProcess.Start(commandLine, options.StderrSink, options.MaxLineBytes);
         try
         {
             string answer = child.Exchange(

@@ -30,18 +30,35 @@ public sealed class ProtocolServer(ICellPhysics impl)
     public bool DatRecords { get; init; } = true;
 
     /// <summary>Reads requests until end of input, answering each on its own line.</summary>
-    /// <param name="input">Requests.</param>
+    /// <param name="input">Requests, UTF-8 lines.</param>
     /// <param name="output">Answers (flushed after each).</param>
-    public void Serve(TextReader input, TextWriter output)
+    /// <param name="maxLineBytes">The most bytes of one request line (<see cref="LineLimit"/>); a longer one gets an error answer naming the limit and is skipped unread.</param>
+    public void Serve(Stream input, TextWriter output, int maxLineBytes = BoundedLineReader.DefaultMaxBytes)
     {
-        while (input.ReadLine() is string line)
+        var reader = new BoundedLineReader(input, maxLineBytes);
+        while (true)
         {
-            if (line.Length == 0)
+            string answer;
+            try
             {
-                continue;
+                if (reader.ReadLine() is not string line)
+                {
+                    return;
+                }
+
+                if (line.Length == 0)
+                {
+                    continue;
+                }
+
+                answer = Answer(line);
+            }
+            catch (LineTooLongException e)
+            {
+                answer = Error("malformed request: " + e.Message);
             }
 
-            output.WriteLine(Answer(line));
+            output.WriteLine(answer);
             output.Flush();
         }
     }

@@ -1,5 +1,4 @@
 using System.Buffers;
-using System.Globalization;
 using System.Numerics;
 using System.Text;
 using System.Text.Json;
@@ -68,7 +67,7 @@ public static class Wire
         if (AcPhys.Spec.Corpus.JsonKeys.FirstDuplicate(doc.RootElement) is { } duplicate)
         {
             doc.Dispose();
-            throw new WireException($"{duplicate}: duplicate key (each key once per object)");
+            throw new WireException(AcPhys.Spec.Corpus.JsonKeys.Message(duplicate));
         }
 
         return doc;
@@ -341,7 +340,7 @@ public static class Wire
         return v.ValueKind == JsonValueKind.String ? v.GetString()! : throw new WireException($"field \"{name}\" must be a string, got {Show(v)}");
     }
 
-    /// <summary>Reads spheres <c>[{x,y,z,r}]</c>.</summary>
+    /// <summary>Reads spheres <c>[{x,y,z,r}]</c> by the shared rules (<see cref="Values.SphereList"/>: empty allowed, at most 10,000; <see cref="Values.SphereRadius"/>), as corpus files read a walk's body.</summary>
     /// <param name="obj">The object.</param>
     /// <param name="name">The property name.</param>
     /// <returns>The spheres.</returns>
@@ -353,9 +352,34 @@ public static class Wire
             throw new WireException($"field \"{name}\" must be an array of {{x,y,z,r}}");
         }
 
-        return array.EnumerateArray()
-            .Select(s => new Sphere(new Vector3(ReadFloat(s, "x"), ReadFloat(s, "y"), ReadFloat(s, "z")), ReadFloat(s, "r")))
-            .ToArray();
+        Refuse(Values.SphereList.Problem(array.GetArrayLength(), min: 0), name);
+        var spheres = new Sphere[array.GetArrayLength()];
+        int i = 0;
+        foreach (var s in array.EnumerateArray())
+        {
+            string at = $"{name}[{i}]";
+            if (s.ValueKind != JsonValueKind.Object)
+            {
+                throw new WireException($"field \"{at}\" must be an object {{x,y,z,r}}, got {Show(s)}");
+            }
+
+            float r = FloatValue(Field(s, "r"), at + ".r");
+            Refuse(Values.SphereRadius.Problem(r), at + ".r");
+            spheres[i++] = new Sphere(new Vector3(FloatValue(Field(s, "x"), at + ".x"), FloatValue(Field(s, "y"), at + ".y"), FloatValue(Field(s, "z"), at + ".z")), r);
+        }
+
+        return spheres;
+    }
+
+    /// <summary>Reads a sphere radius field by the shared rule (<see cref="Values.SphereRadius"/>: finite, ≥ 0).</summary>
+    /// <param name="obj">The object.</param>
+    /// <param name="name">The property name.</param>
+    /// <returns>The radius.</returns>
+    public static float ReadRadius(JsonElement obj, string name)
+    {
+        float r = ReadFloat(obj, name);
+        Refuse(Values.SphereRadius.Problem(r), name);
+        return r;
     }
 
     /// <summary>Reads a vector <c>{x,y,z}</c>.</summary>
@@ -370,8 +394,8 @@ public static class Wire
 
     /// <summary>Shows a JSON value briefly, for messages.</summary>
     /// <param name="v">The value.</param>
-    /// <returns>At most 60 characters of its text.</returns>
-    public static string Show(JsonElement v) => Brief(v.GetRawText(), 60);
+    /// <returns>At most 80 characters of its text (<see cref="Values.InputQuote"/>).</returns>
+    public static string Show(JsonElement v) => Values.InputQuote.Json(v);
 
     /// <summary>Cuts a text to a length, for messages.</summary>
     /// <param name="text">The text.</param>
@@ -384,26 +408,14 @@ public static class Wire
             ? id
             : throw new WireException($"field \"{name}\" must be a cell id string \"0xAABBCCCC\" (8 hex digits), got {Show(v)}");
 
-    private static float FloatValue(JsonElement v, string name)
+    private static float FloatValue(JsonElement v, string name) =>
+        Values.Float32Json.TryRead(v, nonFiniteNames: true, out float f, out string? problem) ? f : throw new WireException($"field \"{name}\": {problem}");
+
+    private static void Refuse(string? problem, string name)
     {
-        switch (v.ValueKind)
+        if (problem is not null)
         {
-            case JsonValueKind.Number when v.TryGetDouble(out double d):
-                return (float)d;
-            case JsonValueKind.String:
-                switch (v.GetString())
-                {
-                    case "NaN":
-                        return float.NaN;
-                    case "Infinity":
-                        return float.PositiveInfinity;
-                    case "-Infinity":
-                        return float.NegativeInfinity;
-                }
-
-                break;
+            throw new WireException($"field \"{name}\": {problem}");
         }
-
-        throw new WireException(string.Create(CultureInfo.InvariantCulture, $"field \"{name}\" must be a number or \"NaN\" / \"Infinity\" / \"-Infinity\", got {Show(v)}"));
     }
 }

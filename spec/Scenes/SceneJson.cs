@@ -179,7 +179,7 @@ public static class SceneJson
 
             if (AcPhys.Spec.Corpus.JsonKeys.FirstDuplicate(doc.RootElement) is { } duplicate)
             {
-                throw new SceneFormatException($"{source}: {duplicate}: duplicate key (each key once per object)");
+                throw new SceneFormatException($"{source}: {AcPhys.Spec.Corpus.JsonKeys.Message(duplicate)}");
             }
 
             return Read(doc.RootElement, source, "$");
@@ -364,13 +364,13 @@ public static class SceneJson
             string text = e.ValueKind == JsonValueKind.String ? e.GetString()! : string.Empty;
             bool ok = text.StartsWith("0x", StringComparison.OrdinalIgnoreCase) && text.Length == 6
                 && ushort.TryParse(text.AsSpan(2), NumberStyles.AllowHexSpecifier, CultureInfo.InvariantCulture, out var v);
-            Require(ok, path, $"expected a block id \"0x\" and 4 hex digits, got {e.GetRawText()}");
+            Require(ok, path, $"expected a block id \"0x\" and 4 hex digits, got {Values.InputQuote.Json(e)}");
             return new LandblockId(ushort.Parse(text.AsSpan(2), NumberStyles.AllowHexSpecifier, CultureInfo.InvariantCulture));
         }
 
         public CellId EnvCellId(JsonElement e, string path)
         {
-            Require(e.ValueKind == JsonValueKind.String && CellIdText.TryParse(e.GetString()!, out var id), path, $"expected a cell id \"0x\" and 8 hex digits, got {e.GetRawText()}");
+            Require(e.ValueKind == JsonValueKind.String && CellIdText.TryParse(e.GetString()!, out var id), path, $"expected a cell id \"0x\" and 8 hex digits, got {Values.InputQuote.Json(e)}");
             CellIdText.TryParse(e.GetString()!, out var cell);
             Require(cell.IsEnv, path, $"{cell} is not an env cell id (low word 0x0100..0xFFFD)");
             return cell;
@@ -381,7 +381,7 @@ public static class SceneJson
             string text = e.ValueKind == JsonValueKind.String ? e.GetString()! : string.Empty;
             bool ok = text.StartsWith("0x", StringComparison.OrdinalIgnoreCase) && text.Length == 6
                 && ushort.TryParse(text.AsSpan(2), NumberStyles.AllowHexSpecifier, CultureInfo.InvariantCulture, out _);
-            Require(ok, path, $"expected a low word \"0x\" and 4 hex digits{(env ? string.Empty : " or \"outside\"")}, got {e.GetRawText()}");
+            Require(ok, path, $"expected a low word \"0x\" and 4 hex digits{(env ? string.Empty : " or \"outside\"")}, got {Values.InputQuote.Json(e)}");
             ushort v = ushort.Parse(text.AsSpan(2), NumberStyles.AllowHexSpecifier, CultureInfo.InvariantCulture);
             Require(v is >= LandDefs.FirstEnvCellId and <= LandDefs.LastEnvCellId, path, $"0x{v:X4} is not an env cell low word (0x0100..0xFFFD)");
             return v;
@@ -389,9 +389,8 @@ public static class SceneJson
 
         public float Number(JsonElement e, string path)
         {
-            Require(e.ValueKind == JsonValueKind.Number, path, $"expected a number, got {e.GetRawText()}");
-            float f = float.Parse(e.GetRawText(), NumberStyles.Float, CultureInfo.InvariantCulture);
-            Require(float.IsFinite(f), path, "non-finite value (overflows float32)");
+            bool ok = Values.Float32Json.TryRead(e, nonFiniteNames: false, out float f, out string? problem);
+            Require(ok, path, problem ?? string.Empty);
             return f;
         }
 

@@ -1,0 +1,139 @@
+using System.Text;
+
+namespace AcPhys.Spec.Protocol;
+
+/// <summary>
+/// Reads UTF-8 lines from a protocol peer (requests in <c>serve</c>, answers of an implementation) holding at most
+/// <see cref="MaxBytes"/> bytes of one line: a longer line is refused with <see cref="LineTooLongException"/> as soon as
+/// it passes the limit, and its rest is skipped unread into memory (issue 19: a 100 MB answer line once took 820 MB).
+/// </summary>
+/// <remarks><para>
+/// A line ends at <c>\n</c>; a <c>\r</c> before it is dropped, as <see cref="TextReader.ReadLine"/> does for
+/// <c>\r\n</c>. Invalid UTF-8 becomes U+FFFD. A UTF-8 byte order mark at the very start is skipped.
+/// </para></remarks>
+public sealed class BoundedLineReader
+{
+    /// <summary>The default limit: 1 MiB per line.</summary>
+    public const int DefaultMaxBytes = 1 << 20;
+
+    private readonly Stream stream;
+    private readonly byte[] buffer = new byte[64 * 1024];
+    private readonly MemoryStream line = new();
+    private int start;
+    private int end;
+    private bool skipping;
+    private bool started;
+
+    /// <summary>Initializes a new instance.</summary>
+    /// <param name="stream">The peer's output (read, never closed here).</param>
+    /// <param name="maxBytes">The most bytes of one line, newline excluded.</param>
+    public BoundedLineReader(Stream stream, int maxBytes = DefaultMaxBytes)
+    {
+        ArgumentOutOfRangeException.ThrowIfLessThan(maxBytes, 1);
+        this.stream = stream;
+        MaxBytes = maxBytes;
+    }
+
+    /// <summary>Gets the most bytes of one line.</summary>
+    public int MaxBytes { get; }
+
+    /// <summary>Reads the next line.</summary>
+    /// <returns>The line without its end, or null at end of input.</returns>
+    /// <exception cref="LineTooLongException">The line is longer than <see cref="MaxBytes"/>; the next call reads the line after it.</exception>
+    public string? ReadLine() => ReadLineAsync().AsTask().GetAwaiter().GetResult();
+
+    /// <summary>Reads the next line without holding a thread while the peer is silent (the ProcessAdapter waits on it with a timeout).</summary>
+    /// <returns>The line without its end, or null at end of input.</returns>
+    /// <exception cref="LineTooLongException">The line is longer than <see cref="MaxBytes"/>; the next call reads the line after it.</exception>
+    public async ValueTask<string?> ReadLineAsync()
+    {
+        if (skipping && !await SkipRestAsync().ConfigureAwait(false))
+        {
+            return null;
+        }
+
+        line.SetLength(0);
+        while (true)
+        {
+            if (start == end && !await FillAsync().ConfigureAwait(false))
+            {
+                return line.Length == 0 ? null : Text();
+            }
+
+            int newline = Array.IndexOf(buffer, (byte)'\n', start, end - start);
+            int take = (newline < 0 ? end : newline) - start;
+            // A "\r" just before the "\n" does not count; without the "\n" yet, one byte more may be that "\r".
+            long length = line.Length + take - (newline < 0 ? 1 : EndsWithReturn(newline, take));
+            if (length > MaxBytes)
+            {
+                // Drop what is held and what is buffered of this line; the rest is skipped on the next call.
+                line.SetLength(0);
+                skipping = newline < 0;
+                start = newline < 0 ? end : newline + 1;
+                throw new LineTooLongException(MaxBytes);
+            }
+
+            line.Write(buffer, start, take);
+            if (newline >= 0)
+            {
+                start = newline + 1;
+                return Text();
+            }
+
+            start = end;
+        }
+    }
+
+    private int EndsWithReturn(int newline, int take) =>
+        (take > 0 ? buffer[newline - 1] : line.Length > 0 ? line.GetBuffer()[line.Length - 1] : (byte)0) == (byte)'\r' ? 1 : 0;
+
+    private string Text()
+    {
+        var bytes = line.GetBuffer().AsSpan(0, (int)line.Length);
+        if (bytes.Length > 0 && bytes[^1] == (byte)'\r')
+        {
+            bytes = bytes[..^1];
+        }
+
+        return Encoding.UTF8.GetString(bytes);
+    }
+
+    private async ValueTask<bool> FillAsync()
+    {
+        start = 0;
+        end = await stream.ReadAsync(buffer.AsMemory(0, buffer.Length)).ConfigureAwait(false);
+        if (!started && end > 0)
+        {
+            started = true;
+            if (end >= 3 && buffer[0] == 0xEF && buffer[1] == 0xBB && buffer[2] == 0xBF)
+            {
+                start = 3;
+            }
+        }
+
+        return end > start || (end > 0 && await FillAsync().ConfigureAwait(false));
+    }
+
+    // Skips to just after the next newline; false at end of input.
+    private async ValueTask<bool> SkipRestAsync()
+    {
+        while (true)
+        {
+            if (start == end && !await FillAsync().ConfigureAwait(false))
+            {
+                skipping = false;
+                return false;
+            }
+
+            int newline = Array.IndexOf(buffer, (byte)'\n', start, end - start);
+            if (newline >= 0)
+            {
+                start = newline + 1;
+                skipping = false;
+                return true;
+            }
+
+            start = end;
+        }
+    }
+}
