@@ -42,7 +42,7 @@ public sealed record CorpusEntry
     public string Kind => Parts is not null ? "parts" : SceneWalk is not null ? "scene-walk" : Walk is null ? "land" : "walk";
 
     /// <summary>Wraps a failing case of any supported type as an entry, or returns null for an unsupported type.</summary>
-    /// <param name="c">A LandCase, Walk, SceneWalk, PartsCase or OutdoorCase (stored as a walk with no steps).</param>
+    /// <param name="c">A LandCase, Walk, SceneWalk, PartsCase or OutdoorCase (stored as a walk with no steps; with no spheres, not at all).</param>
     /// <param name="title">Title.</param>
     /// <param name="invariant">Invariant ID.</param>
     /// <param name="foundBy">What found it.</param>
@@ -55,14 +55,16 @@ public sealed record CorpusEntry
         Walk walk => new CorpusEntry { Title = title, Invariant = invariant, FoundBy = foundBy, Seed = seed, Walk = walk },
         SceneWalk sw => new CorpusEntry { Title = title, Invariant = invariant, FoundBy = foundBy, Seed = seed, SceneWalk = sw },
         PartsCase parts => new CorpusEntry { Title = title, Invariant = invariant, FoundBy = foundBy, Seed = seed, Parts = parts },
+        // A query with no spheres has no walk form (a walk judges sphere 0; facts §3.3 step 3 reads the origin
+        // instead): it is reported, not stored.
+        OutdoorCase { Spheres.Count: 0 } => null,
         OutdoorCase q => new CorpusEntry
         {
             Title = title,
             Invariant = invariant,
             FoundBy = foundBy,
             Seed = seed,
-            // With no spheres the walk's start is the position's own point, which the query then reads (facts §3.3 step 3).
-            Walk = new Walk(q.Cell, q.Spheres.Count == 0 ? q.Origin : System.Numerics.Vector3.Zero, q.Spheres.Select(s => new BodySphere(s.Center, s.Radius)).ToArray(), []),
+            Walk = new Walk(q.Cell, System.Numerics.Vector3.Zero, q.Spheres.Select(s => new BodySphere(s.Center, s.Radius)).ToArray(), []),
         },
         _ => null,
     };
