@@ -119,7 +119,7 @@ public sealed class PartsTargetTests
     [InlineData("\"parts\": [" + PartJson + "]", null)]
     [InlineData("\"parts\": [" + PartJson + "]", "$.parts[0].always2d: expected true or false", "false", "\"no\"")]
     [InlineData("\"parts\": [" + PartJson + "]", "$.parts[0].rotation: expected a unit quaternion", "\"w\": 1", "\"w\": 2")]
-    [InlineData("\"parts\": [" + PartJson + "]", "$.parts[0].radius: parts values must be finite", "\"radius\": 1", "\"radius\": \"NaN\"")]
+    [InlineData("\"parts\": [" + PartJson + "]", "$.parts[0].radius: radius must be finite", "\"radius\": 1", "\"radius\": \"NaN\"")]
     [InlineData("\"parts\": [" + PartJson + "]", "$.parts[0].min: every component", "\"x\": -1", "\"x\": 3")]
     [InlineData("\"walk\": {}", "$.parts: missing")]
     public void The_parts_reader_is_strict_and_says_where(string body, string? error, string? from = null, string? to = null)
