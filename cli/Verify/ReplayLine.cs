@@ -50,7 +50,7 @@ internal static class ReplayLine
             return false;
         }
 
-        var again = result.Invariant.Run(impl, cases, seed);
+        var again = result.Invariant.Run(impl, cases, seed, maxClasses: 1);
         return again.Status == ResultStatus.Failed && again.Violation?.CaseText == result.Violation.CaseText;
     }
 

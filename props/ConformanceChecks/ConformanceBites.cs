@@ -39,13 +39,13 @@ public sealed class ConformanceBites
     // pick-last-sphere deviates too, but the pr stream meets no case where it shows in conformance's budget (docs/indoor.md).
     [Fact(DisplayName = "FIND-CELL-CONFORMANCE: every indoor planted fault that names it deviates from the reference and is caught")]
     public void IndoorFaultsAreCaught() => Assert.All(IndoorFaults.All.Where(f => f.CaughtBy.Contains("FIND-CELL-CONFORMANCE")), f =>
-        Assert.Equal(ResultStatus.Failed, ConformanceInvariants.FindCell.Run(PlantedFaults.Create(f.Id), Profile.Pr.CasesPerInvariant, PropertyRun.SeedFor("FIND-CELL-CONFORMANCE")).Status));
+        Assert.Equal(ResultStatus.Failed, ConformanceInvariants.FindCell.Run(PlantedFaults.Create(f.Id), Profile.Pr.CasesPerInvariant, PropertyRun.SeedFor("FIND-CELL-CONFORMANCE"), maxClasses: 1).Status));
 
     [Fact(DisplayName = "FIND-CELL-CONFORMANCE: exact ties retail decides by rule are pinned on open land (a current-first pick declared as retail fails)")]
     public void ExactTiesArePinned()
     {
         var undeclared = new Undeclared(ReferenceAdapter.CurrentFirst, PickPolicy.Retail);
-        Assert.Equal(ResultStatus.Failed, ConformanceInvariants.FindCell.Run(undeclared, Profile.Pr.CasesPerInvariant, PropertyRun.SeedFor("FIND-CELL-CONFORMANCE")).Status);
+        Assert.Equal(ResultStatus.Failed, ConformanceInvariants.FindCell.Run(undeclared, Profile.Pr.CasesPerInvariant, PropertyRun.SeedFor("FIND-CELL-CONFORMANCE"), maxClasses: 1).Status);
     }
 
     [Fact(DisplayName = "FIND-CELL-CONFORMANCE, OUTSIDE-CELLS-CONFORMANCE: a port computing open land in exact double arithmetic is not failed for rounding-decided ties")]
@@ -63,7 +63,7 @@ public sealed class ConformanceBites
         var ace = new ReferenceAdapter(PickPolicy.Retail) { Indoor = new IndoorFidelity(AceEarlyReturn: true, AceNoPortalGuard: true, AceLoadHintLowKey: true) };
         var seed = PropertyRun.SeedFor("FIND-CELL-CONFORMANCE");
         Assert.Equal(ResultStatus.Passed, ConformanceInvariants.FindCell.Run(ace, 2_000, seed).Status);
-        Assert.Equal(ResultStatus.Failed, ConformanceInvariants.FindCell.Run(new Undeclared(ace, PickPolicy.Retail) { HidesIndoorFidelity = true }, 2_000, seed).Status);
+        Assert.Equal(ResultStatus.Failed, ConformanceInvariants.FindCell.Run(new Undeclared(ace, PickPolicy.Retail) { HidesIndoorFidelity = true }, 2_000, seed, maxClasses: 1).Status);
     }
 
     [Fact(DisplayName = "FIND-CELL-CONFORMANCE: a transition query (LoadCells true) keeps the land cells an exit adds, a static one filters them (facts §4 step 5, §6.14)")]

@@ -22,7 +22,7 @@ public sealed class IndoorFaultsAreCaught(ITestOutputHelper output)
         foreach (var id in fault.CaughtBy)
         {
             var stopwatch = Stopwatch.StartNew();
-            var result = InvariantCatalogue.Find(id)!.Run(impl, Profile.Pr.CasesPerInvariant, PropertyRun.SeedFor(id));
+            var result = InvariantCatalogue.Find(id)!.Run(impl, Profile.Pr.CasesPerInvariant, PropertyRun.SeedFor(id), maxClasses: 1);
             Assert.True(result.Status == ResultStatus.Failed, $"{faultId} should be caught by {id}");
             var shrunk = Walk(result.Violation!.Case);
             var original = Walk(result.Original!.Case);

@@ -72,8 +72,9 @@ public abstract class Invariant
     /// <param name="cases">Generated cases.</param>
     /// <param name="seed">The seed.</param>
     /// <param name="sink">Optional sink for FsCheck's text.</param>
+    /// <param name="maxClasses">How many failure classes to search for (1: stop at the first failure, for callers that only need caught or not).</param>
     /// <returns>The result.</returns>
-    public abstract InvariantResult Run(ICellPhysics impl, int cases, Seed seed, Action<string>? sink = null);
+    public abstract InvariantResult Run(ICellPhysics impl, int cases, Seed seed, Action<string>? sink = null, int maxClasses = CatalogueRunner.MaxClasses);
 
     /// <inheritdoc/>
     public override string ToString() => $"{Id}: {Statement}";
@@ -107,8 +108,8 @@ public sealed class Invariant<TCase> : Invariant
     public override Type CaseType => typeof(TCase);
 
     /// <inheritdoc/>
-    public override InvariantResult Run(ICellPhysics impl, int cases, Seed seed, Action<string>? sink = null) =>
-        CatalogueRunner.Run(this, impl, cases, seed, sink);
+    public override InvariantResult Run(ICellPhysics impl, int cases, Seed seed, Action<string>? sink = null, int maxClasses = CatalogueRunner.MaxClasses) =>
+        CatalogueRunner.Run(this, impl, cases, seed, sink, maxClasses);
 
     /// <summary>
     /// Checks one case. An exception from the implementation is itself a violation (every operation must answer

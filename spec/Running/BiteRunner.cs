@@ -60,7 +60,7 @@ public static class BiteRunner
             for (int i = 0; i < invariants.Count; i++)
             {
                 var invariant = invariants[i];
-                var result = invariant.Run(impl, profile.CasesPerInvariant, Seed.Derive(unchecked(runBase + (ulong)k), invariant.Id));
+                var result = invariant.Run(impl, profile.CasesPerInvariant, Seed.Derive(unchecked(runBase + (ulong)k), invariant.Id), maxClasses: 1);
                 if (result.Status == ResultStatus.NotTested)
                 {
                     continue;

@@ -43,7 +43,7 @@ public static class BudgetCurve
             }
 
             int cap = (int)(best ?? maxCases);
-            var result = invariant.Run(impl, cap, Seed.Derive(baseSeed, invariant.Id));
+            var result = invariant.Run(impl, cap, Seed.Derive(baseSeed, invariant.Id), maxClasses: 1);
             if (result.Status == ResultStatus.Failed && (best is null || result.Cases < best))
             {
                 best = result.Cases;

@@ -20,10 +20,11 @@ public static class CatalogueRunner
     /// <param name="cases">How many cases to generate.</param>
     /// <param name="seed">The seed (with a size to replay one case).</param>
     /// <param name="sink">Optional sink for FsCheck's own text (the class distribution).</param>
+    /// <param name="maxClasses">How many failure classes to search for; 1 stops at the first failure (a bite check needs no more, and a walk invariant's further search is its costliest part).</param>
     /// <returns>The result.</returns>
     /// <exception cref="AdapterFailureException">The implementation could not answer at all.</exception>
     /// <typeparam name="TCase">The case type.</typeparam>
-    public static InvariantResult Run<TCase>(Invariant<TCase> invariant, ICellPhysics impl, int cases, Seed seed, Action<string>? sink = null)
+    public static InvariantResult Run<TCase>(Invariant<TCase> invariant, ICellPhysics impl, int cases, Seed seed, Action<string>? sink = null, int maxClasses = MaxClasses)
     {
         var first = RunOnce(invariant, impl, cases, seed, [], sink);
         if (first.Status != ResultStatus.Failed || Typed<TCase>(first.Violation?.Case) is not TCase shrunk)
@@ -39,7 +40,7 @@ public static class CatalogueRunner
         var more = new List<ClassFailure>();
         int used = first.Cases;
         var elapsed = first.Elapsed;
-        for (int round = 1; round < MaxClasses && used < cases; round++)
+        for (int round = 1; round < maxClasses && used < cases; round++)
         {
             var next = Seed.Derive(seed.Value, "class-" + round);
             var again = RunOnce(invariant, impl, cases - used, next, known, null);
