@@ -15,6 +15,16 @@ public sealed class UserErrorTests
          "walk":{"start":{"cell":"0x36420039","x":100,"y":100,"z":0},"body":[{"x":0,"y":0,"z":0.5,"r":1}],"steps":[[1,1]]}}
         """;
 
+    [Theory]
+    [InlineData("0")]
+    [InlineData("5")]
+    public void MaxClassesOutOfRangeIsAUsageError(string n)
+    {
+        var run = Acphys.Run(["verify", "--max-classes", n, "--only", "ADJUST-RANGE", "--cases", "10"]);
+        Assert.True(run.Exit == 2, run.ToString());
+        Assert.Contains($"--max-classes must be between 1 and 4 (got {n})", run.Err, StringComparison.Ordinal);
+    }
+
     [Fact]
     public void Render_WalkWithHugeSteps_IsAClearUsageError()
     {

@@ -72,13 +72,18 @@ internal static class VerifyCommand
             Description = "Generated cases per invariant, instead of the profile's (e.g. a small budget for a slow --impl-cmd).",
             HelpName = "N",
         };
+        var maxClasses = new Option<int?>("--max-classes")
+        {
+            Description = "Failure classes each failing invariant searches for within its budget (default 4; 1 stops each invariant at its first failure: fastest when you only need caught or not).",
+            HelpName = "N",
+        };
         var sweeps = new Option<bool>("--sweeps") { Description = "Also run the exhaustive sweeps against an --impl-cmd implementation (millions of round trips; off by default there)." };
         var junit = new Option<string>("--junit") { Description = "Also write the results as JUnit XML (one testcase per invariant) to this file.", HelpName = "FILE" };
         var markdown = new Option<string>("--markdown") { Description = "Also write a markdown summary fit for a PR comment to this file.", HelpName = "FILE" };
         var implOptions = new ImplementationOptions();
         var command = new Command("verify", "Run the invariant catalogue against the reference core, a planted fault, or your implementation (--impl, --impl-cmd), and report.")
         {
-            profile, only, except, scope, seed, baseSeed, fault, quiet, classes, pick, fidelity, cases, sweeps, junit, markdown,
+            profile, only, except, scope, seed, baseSeed, fault, quiet, classes, pick, fidelity, cases, maxClasses, sweeps, junit, markdown,
         };
         foreach (var option in implOptions.All)
         {
@@ -101,6 +106,7 @@ internal static class VerifyCommand
                 Fidelity = Impl.ReferenceChoice.ParseFidelity(parse.GetValue(fidelity)),
                 Implementation = implOptions.Read(parse),
                 CasesOverride = parse.GetValue(cases),
+                MaxClasses = parse.GetValue(maxClasses) ?? CatalogueRunner.MaxClasses,
                 JunitPath = parse.GetValue(junit),
                 MarkdownPath = parse.GetValue(markdown),
             };
@@ -127,6 +133,11 @@ internal static class VerifyCommand
         if (sweeps && !settings.Implementation.IsProcess)
         {
             throw new UsageException("--sweeps applies to --impl-cmd (the in-process profiles sweep already)");
+        }
+
+        if (settings.MaxClasses is < 1 or > CatalogueRunner.MaxClasses)
+        {
+            throw new UsageException($"--max-classes must be between 1 and {CatalogueRunner.MaxClasses} (got {settings.MaxClasses})");
         }
 
         if (settings.CasesOverride is int n && n is < 1 or > 10_000_000)
@@ -215,7 +226,7 @@ internal static class VerifyCommand
         IReadOnlyList<InvariantResult> results = [];
         ProgressBars.Run($"verify {impl.Name}", Total(settings), advance =>
         {
-            results = CatalogueRunner.RunCatalogue(impl, settings.Profile, only, settings.FixedSeed, result =>
+            results = CatalogueRunner.RunCatalogue(impl, settings.Profile, only, settings.FixedSeed, settings.MaxClasses, result =>
             {
                 finished(result);
                 advance($"{result.Invariant.Id} {VerifyReport.Verdict(result.Status)}");

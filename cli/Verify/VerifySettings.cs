@@ -47,6 +47,9 @@ internal sealed record VerifySettings
     /// <summary>Gets the <c>--cases</c> override of the profile's cases per invariant, if any.</summary>
     public int? CasesOverride { get; init; }
 
+    /// <summary>Gets how many failure classes each failing invariant searches for (<c>--max-classes</c>).</summary>
+    public int MaxClasses { get; init; } = Spec.Running.CatalogueRunner.MaxClasses;
+
     /// <summary>Gets the JUnit XML file to write (<c>--junit</c>), if any.</summary>
     public string? JunitPath { get; init; }
 

@@ -192,6 +192,7 @@ public static class CatalogueRunner
     /// <param name="profile">The budget.</param>
     /// <param name="only">Invariant IDs to run (all when null or empty).</param>
     /// <param name="fixedSeed">A seed to use for every invariant instead of the profile's.</param>
+    /// <param name="maxClasses">Failure classes each failing invariant searches for (1: stop at its first failure).</param>
     /// <param name="progress">Called after each invariant.</param>
     /// <returns>One result per invariant.</returns>
     public static IReadOnlyList<InvariantResult> RunCatalogue(
@@ -199,6 +200,7 @@ public static class CatalogueRunner
         Profile profile,
         IReadOnlyCollection<string>? only = null,
         Seed? fixedSeed = null,
+        int maxClasses = MaxClasses,
         Action<InvariantResult>? progress = null)
     {
         ulong runBase = profile.BaseSeed ?? Seed.Fresh().Value;
@@ -211,7 +213,7 @@ public static class CatalogueRunner
             }
 
             var seed = fixedSeed ?? Seed.Derive(runBase, invariant.Id);
-            var result = invariant.Run(impl, profile.CasesPerInvariant, seed);
+            var result = invariant.Run(impl, profile.CasesPerInvariant, seed, maxClasses: maxClasses);
             if (profile.Exhaustive && result.Status == ResultStatus.Passed && fixedSeed is null && invariant is Invariant<LandCase> land)
             {
                 var sweep = Exhaustive.For(land, impl);
