@@ -33,9 +33,8 @@ internal static class DiffRunner
         }
 
         var stopwatch = Stopwatch.StartNew();
-        var classes = new Dictionary<string, (Divergence First, TCase Input, int Count)>(StringComparer.Ordinal);
-        var inputs = new Dictionary<string, Dictionary<string, int>>(StringComparer.Ordinal);
-        var order = new List<string>();
+        // One tally per class, in the order classes were first seen (the tie-break of the ranking below).
+        var classes = new Dictionary<string, Tally<TCase>>(StringComparer.Ordinal);
         int seen = 0, divergent = 0;
         AdapterFailureException? failure = null;
         CaseSweep.Each(check.Domain, cases, seed, c =>
@@ -46,17 +45,13 @@ internal static class DiffRunner
                 if (check.Compare(impl, c) is Divergence d)
                 {
                     divergent++;
-                    var spread = inputs.TryGetValue(d.Key, out var s) ? s : inputs[d.Key] = new(StringComparer.Ordinal);
-                    spread[d.Input] = spread.GetValueOrDefault(d.Input) + 1;
-                    if (classes.TryGetValue(d.Key, out var known))
+                    if (!classes.TryGetValue(d.Key, out var tally))
                     {
-                        classes[d.Key] = known with { Count = known.Count + 1 };
+                        classes[d.Key] = tally = new Tally<TCase>(d, c, classes.Count);
                     }
-                    else
-                    {
-                        classes[d.Key] = (d, c, 1);
-                        order.Add(d.Key);
-                    }
+
+                    tally.Count++;
+                    tally.Inputs[d.Input] = tally.Inputs.GetValueOrDefault(d.Input) + 1;
                 }
 
                 return true;
@@ -73,14 +68,14 @@ internal static class DiffRunner
             throw failure;
         }
 
-        var ranked = order.Select((key, i) => (key, i)).OrderByDescending(k => classes[k.key].Count).ThenBy(k => k.i).Select(k => k.key).ToArray();
+        var ranked = classes.Values.OrderByDescending(t => t.Count).ThenBy(t => t.Order).ToArray();
         var result = new List<DivergenceClass>(ranked.Length);
         for (int i = 0; i < ranked.Length; i++)
         {
-            var (first, input, count) = classes[ranked[i]];
-            var (example, divergence) = i < ShrunkClasses ? Shrink(check, impl, input, first) : (input, first);
-            var spread = inputs[ranked[i]].OrderByDescending(kv => kv.Value).ThenBy(kv => kv.Key, StringComparer.Ordinal).Select(kv => (kv.Key, kv.Value)).ToArray();
-            result.Add(new DivergenceClass(first.What, spread, count, example!, divergence.Message, i < ShrunkClasses));
+            var t = ranked[i];
+            var (example, divergence) = i < ShrunkClasses ? Shrink(check, impl, t.Input, t.First) : (t.Input, t.First);
+            var spread = t.Inputs.OrderByDescending(kv => kv.Value).ThenBy(kv => kv.Key, StringComparer.Ordinal).Select(kv => (kv.Key, kv.Value)).ToArray();
+            result.Add(new DivergenceClass(t.First.What, spread, t.Count, example!, divergence.Message, i < ShrunkClasses));
         }
 
         return new DiffResult(check, seed) { Cases = seen, Divergent = divergent, Classes = result, Elapsed = stopwatch.Elapsed };
@@ -111,5 +106,19 @@ internal static class DiffRunner
         }
 
         return (input, divergence);
+    }
+
+    // What one class has seen so far: its first divergence and input, how many inputs, over which input classes.
+    private sealed class Tally<TCase>(Divergence first, TCase input, int order)
+    {
+        public Divergence First { get; } = first;
+
+        public TCase Input { get; } = input;
+
+        public int Order { get; } = order;
+
+        public int Count { get; set; }
+
+        public Dictionary<string, int> Inputs { get; } = new(StringComparer.Ordinal);
     }
 }
