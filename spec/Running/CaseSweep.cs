@@ -26,8 +26,18 @@ public static class CaseSweep
             return true;
         }
 
-        var config = Config.Quick.WithName("sweep").WithMaxTest(cases).WithMaxRejected(cases).WithRunner(new CapturingRunner(null));
-        config = seed.Size is int size ? config.WithReplay(seed.Value, seed.Gamma, size) : config.WithReplay(seed.Value, seed.Gamma);
-        FsCheck.Check.One(config, Prop.ForAll(domain.Arbitrary, (Func<TCase, bool>)Body));
+        FsCheck.Check.One(ConfigFor("sweep", cases, seed, new CapturingRunner(null)), Prop.ForAll(domain.Arbitrary, (Func<TCase, bool>)Body));
+    }
+
+    /// <summary>The FsCheck configuration of a run of <paramref name="cases"/> cases from a seed: one place, so a sweep and <see cref="CatalogueRunner"/> generate the same cases.</summary>
+    /// <param name="name">The run's name.</param>
+    /// <param name="cases">How many cases (discards allowed up to as many).</param>
+    /// <param name="seed">The seed (with a size to replay one case).</param>
+    /// <param name="runner">The runner that receives the result.</param>
+    /// <returns>The configuration.</returns>
+    internal static Config ConfigFor(string name, int cases, Seed seed, IRunner runner)
+    {
+        var config = Config.Quick.WithName(name).WithMaxTest(cases).WithMaxRejected(cases).WithRunner(runner);
+        return seed.Size is int size ? config.WithReplay(seed.Value, seed.Gamma, size) : config.WithReplay(seed.Value, seed.Gamma);
     }
 }

@@ -128,15 +128,7 @@ public static class CatalogueRunner
         }
 
         var runner = new CapturingRunner(sink);
-        var config = Config.Quick
-            .WithName(invariant.Id)
-            .WithMaxTest(cases)
-            .WithMaxRejected(cases)
-            .WithRunner(runner);
-        config = seed.Size is int size
-            ? config.WithReplay(seed.Value, seed.Gamma, size)
-            : config.WithReplay(seed.Value, seed.Gamma);
-
+        var config = CaseSweep.ConfigFor(invariant.Id, cases, seed, runner);
         FsCheck.Check.One(config, Prop.ForAll(domain.Arbitrary, (Func<TCase, Property>)Body));
         stopwatch.Stop();
 
