@@ -2,7 +2,9 @@ using System.CommandLine;
 using AcPhys.Cli.Render;
 using AcPhys.Cli.Replay;
 using AcPhys.Spec.Adapters;
+using AcPhys.Spec.Cases;
 using AcPhys.Spec.Faults;
+using AcPhys.Spec.Judging;
 
 namespace AcPhys.Cli.Commands;
 
@@ -16,10 +18,10 @@ internal static class RenderCommand
     /// <returns>The command.</returns>
     public static Command Create()
     {
-        var file = new Argument<string>("file") { Description = "A walk file (kind \"walk\" or \"scene-walk\"), or a record folder holding a scene walk." };
+        var file = new Argument<string>("file") { Description = "A case file of any kind (walks and scene walks are drawn; other kinds as a card of verdicts), or a record folder holding a scene walk." };
         var output = new Option<string>("--output", "-o") { Description = "The SVG file to write (atomically), or - for stdout.", HelpName = "FILE", Required = true };
         var fault = new Option<string>("--fault") { Description = "Run the walk against the reference with this planted fault.", HelpName = "FAULT" };
-        var command = new Command("render", "Draw a walk or a scene walk as SVG, with the first violating step highlighted.") { file, output, fault };
+        var command = new Command("render", "Draw a stored case as SVG: a walk or a scene walk with the first violating step highlighted, any other kind as its verdicts.") { file, output, fault };
         command.SetAction(parse => Guard.Run("render", () => Run(parse.GetValue(file) ?? string.Empty, parse.GetValue(output)!, parse.GetValue(fault))));
         return command;
     }
@@ -33,11 +35,6 @@ internal static class RenderCommand
         }
 
         var entry = CaseFiles.Read(path);
-        if (entry.Walk is null && entry.SceneWalk is null)
-        {
-            throw new UsageException($"{path}: $.kind: render draws walks and scene walks; this file is kind \"{entry.Kind}\"");
-        }
-
         ICellPhysics impl = ReferenceAdapter.Instance;
         if (faultId is not null)
         {
@@ -45,18 +42,30 @@ internal static class RenderCommand
             impl = PlantedFaults.Create(fault.Id);
         }
 
-        if (entry.SceneWalk is { } sw)
+        // Judged as replay judges it (Judges): the picture names what replay reports.
+        var run = CaseRun.Of(impl, entry.Item);
+        string caption = $"{entry.Title} — {impl.Name}";
+        string drawn;
+        if (entry.Item is AnyCase.WalkInScene sw && run.Trace.Count > 0)
         {
-            var sceneCheck = SceneWalkCheck.Run(impl, sw);
-            OutputPath.Write(output, SceneSvg.Render(sw, sceneCheck, $"{entry.Title} — {impl.Name}"));
-            Said(output, $"render: wrote {output} ({sceneCheck.Trace.Count - 1} steps, {sw.Scene.Cells.Count} env cells, {sw.Scene.PortalCount} portals, "
-                + $"{(sceneCheck.FirstViolatingStep is int f ? $"first violation at step {f}" : "no violation")})");
-            return ExitCodes.Ok;
+            OutputPath.Write(output, SceneSvg.Render(sw.Walk, run, caption));
+            drawn = $"{run.Trace.Count - 1} steps, {sw.Walk.Scene.Cells.Count} env cells, {sw.Walk.Scene.PortalCount} portals";
+        }
+        else if (entry.Item is AnyCase.OutdoorWalk w && run.Trace.Count > 0)
+        {
+            OutputPath.Write(output, WalkSvg.Render(w.Walk, run, caption, entry.Invariant));
+            drawn = $"{run.Trace.Count - 1} steps";
+        }
+        else
+        {
+            OutputPath.Write(output, VerdictCard.Render(run, caption));
+            drawn = $"kind {entry.Kind}: the verdicts";
         }
 
-        var check = WalkReplay.Check(impl, entry.Walk!);
-        OutputPath.Write(output, WalkSvg.Render(entry.Walk!, check, $"{entry.Title} — {impl.Name}", entry.Invariant));
-        Said(output, $"render: wrote {output} ({check.Trace.Count - 1} steps, {(check.FirstViolatingStep is int s ? $"first violation at step {s}" : "no violation")})");
+        var violated = run.Judgement.ViolatedIds;
+        string verdict = violated.Count == 0 ? "no violation"
+            : (run.Trace.Count > 0 && run.FirstViolatingStep is int f ? $"first violation at step {f}; " : string.Empty) + "violated: " + string.Join(", ", violated);
+        Said(output, $"render: wrote {output} ({drawn}, {verdict})");
         return ExitCodes.Ok;
     }
 

@@ -57,7 +57,7 @@ internal static class ReplayCommand
         if (!choice.IsExternal)
         {
             ICellPhysics impl = fault is null ? ReferenceAdapter.Instance : PlantedFaults.Create(fault.Id);
-            return records ? SceneWalkReplay.Replay(CaseFiles.Read(path), path, new ReplayTarget(impl, fault)) : ReplayInputs.For(path).Replay(path, new ReplayTarget(impl, fault));
+            return records ? ReplayPrinter.Replay(CaseFiles.Read(path), path, new ReplayTarget(impl, fault)) : ReplayInputs.For(path).Replay(path, new ReplayTarget(impl, fault));
         }
 
         if (fault is not null)
@@ -70,7 +70,7 @@ internal static class ReplayCommand
         var (external, owned) = choice.Open(line => Console.Error.WriteLine("[impl] " + line));
         using (owned)
         {
-            return entry is not null ? SceneWalkReplay.Replay(entry, path, new ReplayTarget(external, null)) : input!.Replay(path, new ReplayTarget(external, null));
+            return entry is not null ? ReplayPrinter.Replay(entry, path, new ReplayTarget(external, null)) : input!.Replay(path, new ReplayTarget(external, null));
         }
     }
 }

@@ -109,8 +109,8 @@ internal sealed class DiffReport(ICellPhysics impl, ICellPhysics reference, Impl
 
     private string? WriteFiles(DiffResult r, int n, DivergenceClass c, IReadOnlyList<(string Query, string Implementation, string Reference)> side, string replay)
     {
-        var violation = new Violation(r.Check.Id, $"D{n} {c.What}: {c.Message}", CaseText(c.Example)) { Case = c.Example };
-        string? caseFile = FailureFile.Write(violation, folder, "diff", r.Seed.ToString());
+        var violation = new Violation(r.Check.Id, $"D{n} {c.What}: {c.Message}", CaseText(c.Example)) { Case = Spec.Cases.AnyCase.Of(c.Example) };
+        string? caseFile = FailureFile.Write(violation, folder, FinderNames.Diff, r.Seed.ToString());
         string name = caseFile is null ? $"{r.Check.Id}-D{n}" : Path.GetFileNameWithoutExtension(caseFile);
         string sideFile = Path.Combine(folder, name + ".diff.md");
         var md = new StringBuilder();

@@ -1,9 +1,8 @@
 using System.Security.Cryptography;
-using AcPhys.Cli.Replay;
 using AcPhys.Cli.Verify;
 using AcPhys.Fuzz.Targets;
 using AcPhys.Spec.Corpus;
-using AcPhys.Spec.Invariants;
+using AcPhys.Spec.Judging;
 
 namespace AcPhys.Cli.Fuzz;
 
@@ -80,20 +79,9 @@ internal sealed class CrashTriage(FuzzSettings s)
         return new TriageGroup(key, signature, count, file, raw, replay, true, had);
     }
 
-    // The file must fail the same way in `acphys replay` (the same checks replay runs: SceneWalkReplay checks every
-    // testable indoor invariant, as CheckSceneWalk does; PartsReplay every testable parts invariant, as CheckParts does),
-    // under the campaign's fault.
-    private bool Reproduces(CorpusEntry entry)
-    {
-        var impl = Implementations.For(s.Fault);
-        return entry switch
-        {
-            { Parts: { } parts } => InvariantCatalogue.CheckParts(impl, parts) is not null,
-            { SceneWalk: { } sw } => InvariantCatalogue.CheckSceneWalk(impl, sw) is not null,
-            { Walk: { } walk } => WalkReplay.Check(impl, walk).FirstViolatingStep is not null,
-            _ => InvariantCatalogue.CheckLandCase(impl, entry.Case!.Value) is not null,
-        };
-    }
+    // The file must fail the same way in `acphys replay` under the campaign's fault: the same judges (Judges) find the
+    // invariant the finding names.
+    private bool Reproduces(CorpusEntry entry) => CaseReplay.Reproduces(entry, Implementations.For(s.Fault));
 
     private string ReplayCommand(string path)
     {

@@ -1,8 +1,8 @@
 using System.Text;
-using AcPhys.Cli.Replay;
 using AcPhys.Core;
 using AcPhys.Spec.Cases;
 using AcPhys.Spec.Invariants;
+using AcPhys.Spec.Judging;
 using static AcPhys.Cli.Render.SvgText;
 
 namespace AcPhys.Cli.Render;
@@ -33,7 +33,7 @@ internal static class SceneSvg
     /// <param name="check">Its trace and violations.</param>
     /// <param name="title">A caption.</param>
     /// <returns>The SVG text.</returns>
-    public static string Render(SceneWalk sw, SceneWalkCheck check, string title)
+    public static string Render(SceneWalk sw, CaseRun check, string title)
     {
         var scene = sw.Scene;
         var colours = new CellColours(scene);
@@ -276,7 +276,7 @@ internal static class SceneSvg
     }
 
     // The first and last step, each step whose containing cell changes, and each step with a violation (at most MaxRows).
-    private static List<(string Line, bool Bad)> LegendRows(SceneWalkCheck check)
+    private static List<(string Line, bool Bad)> LegendRows(CaseRun check)
     {
         var rows = new List<(string, bool)>();
         foreach (var step in check.Trace)

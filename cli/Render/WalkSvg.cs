@@ -1,9 +1,9 @@
 using System.Globalization;
 using System.Text;
-using AcPhys.Cli.Replay;
 using AcPhys.Core;
 using AcPhys.Spec.Cases;
 using AcPhys.Spec.Invariants;
+using AcPhys.Spec.Judging;
 
 namespace AcPhys.Cli.Render;
 
@@ -26,7 +26,7 @@ internal static class WalkSvg
     /// <param name="title">A caption (wrapped, never cut).</param>
     /// <param name="fileInvariant">The invariant the file says found the walk, or null; named in the header when this run does not break it.</param>
     /// <returns>The SVG text.</returns>
-    public static string Render(Walk walk, WalkCheck check, string title, string? fileInvariant = null)
+    public static string Render(Walk walk, CaseRun check, string title, string? fileInvariant = null)
     {
         var o = walk.Body.Count > 0 ? walk.Body[0].Offset : default;
         var points = check.Trace.Select(s => (X: s.WorldX + o.X, Y: s.WorldY + o.Y)).ToList();

@@ -2,7 +2,7 @@ namespace AcPhys.Cli.Replay;
 
 /// <summary>
 /// One kind of input file <c>acphys replay</c> understands, chosen by the file's JSON <c>kind</c> field
-/// (<c>land</c> for a corpus case today; walk files are meant to come as another implementation).
+/// (<see cref="KindReplay"/>: one per case kind).
 /// </summary>
 internal interface IReplayInput
 {

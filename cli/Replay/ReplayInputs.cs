@@ -6,7 +6,14 @@ namespace AcPhys.Cli.Replay;
 internal static class ReplayInputs
 {
     /// <summary>Gets every known input kind; the first is the default when a file does not say.</summary>
-    public static IReadOnlyList<IReplayInput> All { get; } = [new LandCaseReplay(), new WalkReplay(), new SceneWalkReplay(), new PartsReplay()];
+    public static IReadOnlyList<IReplayInput> All { get; } =
+    [
+        new KindReplay("land", "a corpus case (one LandDefs input)"),
+        new KindReplay("walk", "a walk (start, body, steps)"),
+        new KindReplay("scene-walk", "a walk in a scene (loaded blocks, buildings, env cells, portals)"),
+        new KindReplay("parts", "a parts / bounding-box query (the first part anchors)"),
+        new KindReplay("query", "one open-land query (cell, spheres, origin)"),
+    ];
 
     /// <summary>
     /// Chooses the input for a file by its top-level <c>kind</c> field. A file that cannot be read, is not JSON or has

@@ -38,7 +38,7 @@ internal static class MarkdownSummary
             md.Append(r.Invariant.Statement).Append("\n\n");
             if (r.Violation is { } v)
             {
-                bool walk = v.CaseText.Contains('\n', StringComparison.Ordinal) || v.Case?.GetType().Name == "Walk";
+                bool walk = v.CaseText.Contains('\n', StringComparison.Ordinal) || v.Case is Spec.Cases.AnyCase.OutdoorWalk;
                 md.Append(walk ? "Minimised walk:\n\n" : "Minimised case:\n\n");
                 Fence(md, v.CaseText);
                 md.Append("Message: ").Append(Inline(v.Message)).Append("\n\n");

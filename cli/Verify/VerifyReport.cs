@@ -171,7 +171,7 @@ internal sealed class VerifyReport(VerifySettings settings, ICellPhysics impl)
             Field("seed", r.Seed.ToString());
             Field("replay", line);
             string? caseFile = null, caseReplay = null;
-            if (r.Violation is { } shrunk && FailureFile.Write(shrunk, FailureFolder, "props", r.Seed.ToString()) is string file)
+            if (r.Violation is { } shrunk && FailureFile.Write(shrunk, FailureFolder, FinderNames.Verify, r.Seed.ToString()) is string file)
             {
                 caseFile = file;
                 caseReplay = string.Join(' ', new[] { ReplayLine.Program, "replay", file }.Concat(settings.Fault is null ? [] : ["--fault", settings.Fault.Id]).Concat(settings.Implementation.Words()).Select(ReplayLine.Quote));
@@ -179,7 +179,7 @@ internal sealed class VerifyReport(VerifySettings settings, ICellPhysics impl)
                 Field("replay", caseReplay);
             }
 
-            details[r.Invariant.Id] = new FailureDetail(line, confirmed, caseFile, caseReplay, r.Violation?.Case is Walk walk ? StepRows(walk) : null);
+            details[r.Invariant.Id] = new FailureDetail(line, confirmed, caseFile, caseReplay, r.Violation?.Case is AnyCase.OutdoorWalk { Walk: var walk } ? StepRows(walk) : null);
             if (!confirmed)
             {
                 Field(string.Empty, "(note: re-running this line did not reproduce the same shrunk case)");

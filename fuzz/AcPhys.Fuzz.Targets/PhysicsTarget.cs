@@ -1,4 +1,5 @@
 using AcPhys.Spec.Adapters;
+using AcPhys.Spec.Cases;
 using AcPhys.Spec.Corpus;
 using AcPhys.Spec.Invariants;
 
@@ -53,7 +54,7 @@ public abstract class PhysicsTarget<TCase> : FuzzTarget
     public override Finding? Classify(byte[] input, string? fault)
     {
         var c = Decode(input);
-        return Check(Implementations.For(fault), c) is { } v ? new Finding(v.InvariantId, Signatures.Of(v.Message), v.ToString(), c) : null;
+        return Check(Implementations.For(fault), c) is { } v ? new Finding(v.InvariantId, Signatures.Of(v.Message), v.ToString(), AnyCase.Of(c)) : null;
     }
 
     /// <summary>
@@ -68,7 +69,7 @@ public abstract class PhysicsTarget<TCase> : FuzzTarget
     public override CorpusEntry? Minimise(Finding finding, string? fault, string origin)
     {
         ArgumentNullException.ThrowIfNull(finding);
-        if (finding.Case is not TCase start)
+        if (finding.Case?.Value is not TCase start)
         {
             return null;
         }
@@ -107,7 +108,7 @@ public abstract class PhysicsTarget<TCase> : FuzzTarget
             }
         }
 
-        var entry = CorpusEntry.From(current, $"{violation.InvariantId}: {violation.Message}", violation.InvariantId, "fuzz", origin)
+        var entry = CorpusEntry.From(current, $"{violation.InvariantId}: {violation.Message}", violation.InvariantId, FinderNames.Fuzz, origin)
             ?? throw new InvalidOperationException($"{typeof(TCase).Name} has no corpus format");
         return separates ? entry with { Catches = [fault!] } : entry;
     }

@@ -123,7 +123,7 @@ public sealed class SceneTargetTests
         const string fault = "no-exit-transit";
         byte[] input = File.ReadAllBytes(Path.Combine(RepoPaths.Root, "corpus", "fuzz", "scene", CottageSeeds[0].Seed));
         var finding = Target.Classify(input, fault)!;
-        var original = (SceneWalk)finding.Case!;
+        var original = (SceneWalk)finding.Case!.Value;
 
         var entry = Target.Minimise(finding, fault, "test")!;
         string path = Path.Combine(Path.GetTempPath(), $"acphys-scene-{Environment.ProcessId}-{FailureFile.NameFor(entry)}");

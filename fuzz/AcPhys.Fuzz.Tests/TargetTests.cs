@@ -78,7 +78,7 @@ public sealed class TargetTests
         Assert.Equal(["sticky-pick"], entry.Catches);
         Assert.Equal(finding.Key, InvariantCatalogue.CheckEntry(PlantedFaults.Create("sticky-pick"), entry)?.InvariantId);
         Assert.Null(InvariantCatalogue.CheckEntry(ReferenceAdapter.Instance, entry));
-        var original = (Walk)finding.Case!;
+        var original = (Walk)finding.Case!.Value;
         Assert.True(entry.Walk!.Steps.Count <= original.Steps.Count && entry.Walk.Body.Count <= original.Body.Count);
         Assert.Equal(FailureFile.NameFor(entry), FailureFile.NameFor(target.Minimise(finding, "sticky-pick", "again")!)); // deterministic: same file
     }

@@ -34,5 +34,5 @@ public sealed class IndoorFaultsAreCaught(ITestOutputHelper output)
     }
 
     // The scene invariants' case is a scene walk; FIND-CELL-CONFORMANCE's an AnyWalk holding one.
-    private static SceneWalk Walk(object? c) => c is AnyWalk any ? Assert.IsType<SceneWalk>(any.Indoor) : Assert.IsType<SceneWalk>(c);
+    private static SceneWalk Walk(AnyCase? c) => Assert.IsType<AnyCase.WalkInScene>(c).Walk;
 }

@@ -1,6 +1,8 @@
 using AcPhys.Props.Support;
+using AcPhys.Spec.Corpus;
 using AcPhys.Spec.Faults;
 using AcPhys.Spec.Invariants;
+using AcPhys.Spec.Judging;
 using AcPhys.Spec.Running;
 using Xunit.Abstractions;
 
@@ -118,7 +120,7 @@ public sealed class KnownBugCatalogueTests(ITestOutputHelper output)
     public void NoEntryWaitsForAFault() =>
         Assert.All(KnownBugCatalogue.All, b => Assert.True(b.IsAvailable, $"{b.Id}: {b.NotAvailableReason}"));
 
-    [Theory(DisplayName = "BITE: the catalogue bug is caught by every invariant it declares, under the test profile's seeds")]
+    [Theory(DisplayName = "BITE: the catalogue bug is caught by every invariant it declares, under the test profile's seeds; REPLAY-REPRODUCES: each catcher's failure file, as verify writes it, replays to exit 1 naming that invariant")]
     [MemberData(nameof(AvailableBugIds))]
     public void CatalogueBugIsCaught(string bugId)
     {
@@ -136,5 +138,20 @@ public sealed class KnownBugCatalogueTests(ITestOutputHelper output)
         Assert.True(row.Status == BugStatus.Caught, $"{bug.Id} ESCAPED: no declared invariant caught fault {bug.Fault}; replay: ./acphys bite --bug {bug.Id}");
         Assert.True(!row.MissedDeclared.Any(), $"{bug.Id}: declared catcher(s) {string.Join(", ", row.MissedDeclared)} did not catch it; replay: ./acphys verify --fault {bug.Fault} --only {string.Join(",", row.MissedDeclared)}");
         Assert.NotNull(row.Example);
+
+        // Every failure found is a file that reproduces it where it is replayed (issue 25): the entry verify writes,
+        // read back from its text, judged by the same judges acphys replay and render use, on a fresh faulty adapter.
+        foreach (var cell in row.Cells.Where(c => c.Verdict == BiteVerdict.Caught))
+        {
+            var violation = Assert.IsType<Violation>(cell.Violation);
+            var written = FailureFile.EntryFor(violation, FinderNames.Verify, "seed");
+            Assert.True(written is not null, $"{bug.Id}: {cell.InvariantId}'s failure has no file form: {violation}");
+            var entry = CorpusJson.Read(CorpusJson.Write(written), "failure file");
+            var replay = CaseReplay.Of(entry, PlantedFaults.Create(bug.Fault));
+            string line = $"./acphys replay artifacts/failures/{FailureFile.NameFor(entry)} --fault {bug.Fault}";
+            Assert.True(replay.ExitCode == CaseReplay.Violated, $"{bug.Id}: {cell.InvariantId}'s failure file does not reproduce (exit {replay.ExitCode}); {line}; case {violation.CaseText}");
+            Assert.True(replay.Run.Judgement.ViolatedIds.Contains(cell.InvariantId), $"{bug.Id}: {cell.InvariantId}'s failure file replays naming {string.Join(", ", replay.Run.Judgement.ViolatedIds)} only; {line}; case {violation.CaseText}");
+            Assert.Equal(FinderNames.Verify, entry.FoundBy);
+        }
     }
 }

@@ -33,8 +33,8 @@ public sealed class BoundaryFreezeIsCaught(ITestOutputHelper output)
         output.WriteLine($"detected after {result.Cases} cases, {stopwatch.Elapsed.TotalMilliseconds:F0} ms including shrinking");
         int steps = result.Violation!.Case switch
         {
-            Walk w => w.Steps.Count,
-            OutdoorCase => 0,
+            AnyCase.OutdoorWalk w => w.Walk.Steps.Count,
+            AnyCase.OutdoorQuery => 0,
             _ => throw new InvalidOperationException("unexpected case type"),
         };
         Assert.InRange(steps, 0, 3);

@@ -38,34 +38,50 @@ public sealed record CorpusEntry
     /// <summary>Gets the parts query, for kind <c>parts</c>.</summary>
     public PartsCase? Parts { get; init; }
 
-    /// <summary>Gets the kind: <c>land</c>, <c>walk</c>, <c>scene-walk</c> or <c>parts</c>.</summary>
-    public string Kind => Parts is not null ? "parts" : SceneWalk is not null ? "scene-walk" : Walk is null ? "land" : "walk";
+    /// <summary>Gets the open-land query, for kind <c>query</c>.</summary>
+    public OutdoorCase? Query { get; init; }
 
-    /// <summary>Wraps a failing case of any supported type as an entry, or returns null for an unsupported type.</summary>
-    /// <param name="c">A LandCase, Walk, SceneWalk, PartsCase or OutdoorCase (stored as a walk with no steps; with no spheres, not at all).</param>
+    /// <summary>Gets the kind: <c>land</c>, <c>query</c>, <c>walk</c>, <c>scene-walk</c> or <c>parts</c>.</summary>
+    public string Kind => KindName(Item.Kind);
+
+    /// <summary>Gets the case the entry holds, whatever its kind.</summary>
+    /// <exception cref="InvalidOperationException">The entry holds no case.</exception>
+    public AnyCase Item =>
+        (AnyCase?)(Parts is { } p ? p : Query is { } q ? q : SceneWalk is { } sw ? sw : Walk is { } w ? w : Case is { } c ? c : null)
+        ?? throw new InvalidOperationException("the corpus entry holds no case");
+
+    /// <summary>Returns the file kind of a case kind.</summary>
+    /// <param name="kind">The case kind.</param>
+    /// <returns><c>land</c>, <c>query</c>, <c>walk</c>, <c>scene-walk</c> or <c>parts</c>.</returns>
+    public static string KindName(CaseKind kind) => kind switch
+    {
+        CaseKind.Land => "land",
+        CaseKind.Query => "query",
+        CaseKind.Walk => "walk",
+        CaseKind.SceneWalk => "scene-walk",
+        CaseKind.Parts => "parts",
+        _ => throw new ArgumentOutOfRangeException(nameof(kind), kind, "not a case kind"),
+    };
+
+    /// <summary>Wraps a failing case of any kind as an entry, or returns null when there is no case.</summary>
+    /// <param name="c">The case (an <see cref="AnyCase"/> or a case value of any kind).</param>
     /// <param name="title">Title.</param>
     /// <param name="invariant">Invariant ID.</param>
     /// <param name="foundBy">What found it.</param>
     /// <param name="seed">Seed text.</param>
     /// <returns>The entry, or null.</returns>
-    public static CorpusEntry? From(object? c, string title, string? invariant, string foundBy, string? seed = null) => c switch
+    public static CorpusEntry? From(object? c, string title, string? invariant, string foundBy, string? seed = null)
     {
-        AnyWalk any => From(any.Inner, title, invariant, foundBy, seed),
-        LandCase land => new CorpusEntry { Title = title, Invariant = invariant, FoundBy = foundBy, Seed = seed, Case = land },
-        Walk walk => new CorpusEntry { Title = title, Invariant = invariant, FoundBy = foundBy, Seed = seed, Walk = walk },
-        SceneWalk sw => new CorpusEntry { Title = title, Invariant = invariant, FoundBy = foundBy, Seed = seed, SceneWalk = sw },
-        PartsCase parts => new CorpusEntry { Title = title, Invariant = invariant, FoundBy = foundBy, Seed = seed, Parts = parts },
-        // A query with no spheres has no walk form (a walk judges sphere 0; facts §3.3 step 3 reads the origin
-        // instead): it is reported, not stored.
-        OutdoorCase { Spheres.Count: 0 } => null,
-        OutdoorCase q => new CorpusEntry
+        var header = new CorpusEntry { Title = title, Invariant = invariant, FoundBy = foundBy, Seed = seed };
+        return AnyCase.Of(c) switch
         {
-            Title = title,
-            Invariant = invariant,
-            FoundBy = foundBy,
-            Seed = seed,
-            Walk = new Walk(q.Cell, System.Numerics.Vector3.Zero, q.Spheres.Select(s => new BodySphere(s.Center, s.Radius)).ToArray(), []),
-        },
-        _ => null,
-    };
+            AnyCase.LandQuery land => header with { Case = land.Case },
+            AnyCase.OutdoorQuery q => header with { Query = q.Query },
+            AnyCase.OutdoorWalk walk => header with { Walk = walk.Walk },
+            AnyCase.WalkInScene sw => header with { SceneWalk = sw.Walk },
+            AnyCase.PartsQuery parts => header with { Parts = parts.Parts },
+            null => null,
+            _ => throw new ArgumentOutOfRangeException(nameof(c), c, "not a case kind"),
+        };
+    }
 }

@@ -56,6 +56,10 @@ public static class CorpusJson
             {
                 PartsJson.Write(w, parts);
             }
+            else if (entry.Query is { } query)
+            {
+                QueryJson.Write(w, query);
+            }
             else if (entry.SceneWalk is { } sw)
             {
                 w.WritePropertyName("scene");
@@ -122,11 +126,11 @@ public static class CorpusJson
             var version = Prop(root, "version", source);
             Require(version.ValueKind == JsonValueKind.Number && version.TryGetInt32(out int v) && v == CorpusEntry.CurrentVersion, source, "$.version", $"expected {CorpusEntry.CurrentVersion}");
             string kind = Str(root, "kind", source);
-            Require(kind is "land" or "walk" or "scene-walk" or "parts", source, "$.kind", "expected \"land\" or \"walk\" (or \"scene-walk\", \"parts\")");
+            Require(kind is "land" or "walk" or "scene-walk" or "parts" or "query", source, "$.kind", "expected \"land\" or \"walk\" (or \"scene-walk\", \"parts\", \"query\")");
             string title = Str(root, "title", source);
             Require(title.Length <= MaxTitle, source, "$.title", $"{title.Length} characters; at most {MaxTitle}");
             string foundBy = Str(root, "foundBy", source);
-            Require(foundBy is "hand" or "props" or "fuzz" or "spec" or "diff", source, "$.foundBy", "expected hand, props, fuzz, spec or diff");
+            Require(FinderNames.IsKnown(foundBy), source, "$.foundBy", FinderNames.Expected);
             string? invariant = OptStr(root, "invariant", source);
             string? seed = OptStr(root, "seed", source);
             var catches = new List<string>();
@@ -156,6 +160,11 @@ public static class CorpusJson
                 }
 
                 return header with { SceneWalk = new SceneWalk(scene, WalkJson.Read(Prop(root, "walk", source), source)) };
+            }
+
+            if (kind == "query")
+            {
+                return header with { Query = QueryJson.Read(Prop(root, "query", source), source) };
             }
 
             if (kind == "parts")

@@ -178,7 +178,7 @@ public static class DatManifestJson
             var invariant = corpus.TryGetProperty("invariant", out _) ? Str(corpus, "invariant", source, "$.corpus") : null;
             var seed = corpus.TryGetProperty("seed", out _) ? Str(corpus, "seed", source, "$.corpus") : null;
             string foundBy = Str(corpus, "foundBy", source, "$.corpus");
-            Require(foundBy is "hand" or "props" or "fuzz" or "spec" or "diff", "$.corpus.foundBy", "expected hand, props, fuzz, spec or diff");
+            Require(FinderNames.IsKnown(foundBy), "$.corpus.foundBy", FinderNames.Expected);
             var catches = Items(corpus, "catches", source, "$.corpus").Select((x, i) => Text(x, $"$.corpus.catches[{i}]", source)).ToList();
             header = new CorpusEntry { Title = title, FoundBy = foundBy, Invariant = invariant, Seed = seed, Catches = catches };
         }

@@ -109,7 +109,7 @@ public static class ConformanceInvariants
             if (Conformance.Difference(got, want, superset) is string why
                 && !Conformance.ExcusedOnOpenLand(got, want, alternate.FindCell(s.Query.Cell, s.Query.Origin, s.Query.Spheres, current), p => reference.FindCell(s.Query.Cell, s.Query.Origin, p, current), (a, b) => Conformance.Difference(a, b, superset) is null, s.Query.Spheres))
             {
-                return Outcome.Violated($"step {s.Index} (find_cell from {s.Query.Cell}, spheres [{string.Join("; ", s.Query.Spheres.Select(OutdoorCase.Format))}], current {current}): {why}");
+                return Outcome.ViolatedAt(s.Index, $"step {s.Index} (find_cell from {s.Query.Cell}, spheres [{string.Join("; ", s.Query.Spheres.Select(OutdoorCase.Format))}], current {current}): {why}");
             }
         }
 
@@ -139,7 +139,7 @@ public static class ConformanceInvariants
                     && Conformance.Probes(s.Query.Spheres).All(p => Conformance.Difference(got, reference.FindCell(scene, s.Query.Cell, p, current, loadCells), superset) is not null))
                 {
                     string kind = loadCells ? "transition" : "static";
-                    return Outcome.Violated($"step {s.Index} ({kind} find_cell from {s.Query.Cell}, spheres [{string.Join("; ", s.Query.Spheres.Select(OutdoorCase.Format))}], current {current}): {why}");
+                    return Outcome.ViolatedAt(s.Index, $"step {s.Index} ({kind} find_cell from {s.Query.Cell}, spheres [{string.Join("; ", s.Query.Spheres.Select(OutdoorCase.Format))}], current {current}): {why}");
                 }
             }
         }

@@ -34,7 +34,7 @@ public static class ExactSteps
                 var o = check(scene, s);
                 if (o.IsViolation)
                 {
-                    return Outcome.Violated($"step {s.Index}: ({(loadCells ? "transition" : "static")} query from {s.Query.Cell}) {o.Message}");
+                    return Outcome.ViolatedAt(s.Index, $"step {s.Index}: ({(loadCells ? "transition" : "static")} query from {s.Query.Cell}) {o.Message}");
                 }
 
                 applied |= o.Verdict == Verdict.Holds;

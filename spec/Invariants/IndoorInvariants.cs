@@ -34,7 +34,7 @@ public static class IndoorInvariants
                 applied = true;
                 if (!s.Containing.IsEnv)
                 {
-                    return Outcome.Violated($"step {s.Index}: candidate {inside.Id} contains sphere 0's centre but the containing cell is {s.Containing}");
+                    return Outcome.ViolatedAt(s.Index, $"step {s.Index}: candidate {inside.Id} contains sphere 0's centre but the containing cell is {s.Containing}");
                 }
             }
 
@@ -71,7 +71,7 @@ public static class IndoorInvariants
                 applied = true;
                 if (s.Containing != prev)
                 {
-                    return Outcome.Violated($"step {s.Index}: current {prev} still contains sphere 0's centre but the pick moved to {s.Containing}");
+                    return Outcome.ViolatedAt(s.Index, $"step {s.Index}: current {prev} still contains sphere 0's centre but the pick moved to {s.Containing}");
                 }
             }
 
@@ -102,7 +102,7 @@ public static class IndoorInvariants
                 var c = Center(s);
                 if (LoadHintMismatch(w, s) is string hint)
                 {
-                    return Outcome.Violated($"step {s.Index}: {hint}");
+                    return Outcome.ViolatedAt(s.Index, $"step {s.Index}: {hint}");
                 }
 
                 if (i == 0 || offTrack[i] || offTrack[i - 1])
@@ -135,7 +135,7 @@ public static class IndoorInvariants
                     applied = true;
                     if (!both.Contains(s.Current))
                     {
-                        return Outcome.Violated($"step {s.Index}: sphere 0's centre has been inside {both[0]} for two steps but the current cell is {s.Current}");
+                        return Outcome.ViolatedAt(s.Index, $"step {s.Index}: sphere 0's centre has been inside {both[0]} for two steps but the current cell is {s.Current}");
                     }
 
                     continue;
@@ -149,7 +149,7 @@ public static class IndoorInvariants
                     applied = true;
                     if (!s.Current.IsLand)
                     {
-                        return Outcome.Violated($"step {s.Index}: sphere 0's centre has been outside every cell for two steps, over loaded land, but the current cell is {s.Current}");
+                        return Outcome.ViolatedAt(s.Index, $"step {s.Index}: sphere 0's centre has been outside every cell for two steps, over loaded land, but the current cell is {s.Current}");
                     }
                 }
             }
@@ -185,7 +185,7 @@ public static class IndoorInvariants
                 applied = true;
                 if (!Linked(w.Scene, a, b))
                 {
-                    return Outcome.Violated($"step {trace[i].Index}: the current cell jumped from {a} to {b}, which is neither a neighbour nor behind a portal");
+                    return Outcome.ViolatedAt(trace[i].Index, $"step {trace[i].Index}: the current cell jumped from {a} to {b}, which is neither a neighbour nor behind a portal");
                 }
             }
 
@@ -215,7 +215,7 @@ public static class IndoorInvariants
                 {
                     if (id != cell.Id && !cell.Visible.Contains(id) && SceneOracle.IsLoaded(w.Scene, id))
                     {
-                        return Outcome.Violated($"step {s.Index}: from {cell.Id}, candidate {id} is loaded but not in its VisibleCells [{string.Join(", ", cell.Visible)}]");
+                        return Outcome.ViolatedAt(s.Index, $"step {s.Index}: from {cell.Id}, candidate {id} is loaded but not in its VisibleCells [{string.Join(", ", cell.Visible)}]");
                     }
                 }
             }
@@ -289,7 +289,7 @@ public static class IndoorInvariants
                 var expected = x.Cells.Select(id => Move(id, dx, dy)).ToList();
                 if (!expected.SequenceEqual(y.Cells) || Move(x.Containing, dx, dy) != y.Containing)
                 {
-                    return Outcome.Violated($"step {x.Index}: moved by ({dx}, {dy}) blocks the answer is [{string.Join(", ", y.Cells)}] → {y.Containing}, expected [{string.Join(", ", expected)}] → {Move(x.Containing, dx, dy)}");
+                    return Outcome.ViolatedAt(x.Index, $"step {x.Index}: moved by ({dx}, {dy}) blocks the answer is [{string.Join(", ", y.Cells)}] → {y.Containing}, expected [{string.Join(", ", expected)}] → {Move(x.Containing, dx, dy)}");
                 }
             }
 
@@ -321,7 +321,7 @@ public static class IndoorInvariants
                     : SceneOracle.Cell(w.Scene, s.Containing) is { } cell && SceneOracle.Depth(cell, s.Query.Cell, c) >= -Margin;
                 if (!ok)
                 {
-                    return Outcome.Violated($"step {s.Index}: containing {s.Containing} does not contain sphere 0's centre (world {wx:R}, {wy:R}, z {c.Z:R})");
+                    return Outcome.ViolatedAt(s.Index, $"step {s.Index}: containing {s.Containing} does not contain sphere 0's centre (world {wx:R}, {wy:R}, z {c.Z:R})");
                 }
             }
 
@@ -354,7 +354,7 @@ public static class IndoorInvariants
                 {
                     var c = Center(s);
                     var (wx, wy) = SceneOracle.World(s.Query.Cell, c);
-                    return Outcome.Violated($"step {s.Index}: no containing cell for sphere 0's centre at world ({wx:R}, {wy:R}, z {c.Z:R}) from {s.Query.Cell}, over loaded land");
+                    return Outcome.ViolatedAt(s.Index, $"step {s.Index}: no containing cell for sphere 0's centre at world ({wx:R}, {wy:R}, z {c.Z:R}) from {s.Query.Cell}, over loaded land");
                 }
             }
 
@@ -374,7 +374,7 @@ public static class IndoorInvariants
             {
                 if (Unreachable(w.Scene, s) is string why)
                 {
-                    return Outcome.Violated($"step {s.Index}: {why}");
+                    return Outcome.ViolatedAt(s.Index, $"step {s.Index}: {why}");
                 }
             }
 

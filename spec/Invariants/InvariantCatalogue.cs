@@ -1,6 +1,7 @@
 using AcPhys.Spec.Adapters;
 using AcPhys.Spec.Cases;
 using AcPhys.Spec.Corpus;
+using AcPhys.Spec.Judging;
 
 namespace AcPhys.Spec.Invariants;
 
@@ -21,106 +22,37 @@ public static class InvariantCatalogue
     /// <returns>The invariant, or null.</returns>
     public static Invariant? Find(string id) => All.FirstOrDefault(i => string.Equals(i.Id, id, StringComparison.OrdinalIgnoreCase));
 
-    /// <summary>Checks one case against every testable LandDefs invariant and returns the first violation.</summary>
+    /// <summary>Checks one case against every testable LandDefs invariant, conformance included (<see cref="Judges"/>).</summary>
     /// <param name="impl">The implementation under test.</param>
     /// <param name="c">The case.</param>
-    /// <returns>The first violation in catalogue order, or null when all hold.</returns>
-    public static Violation? CheckLandCase(ICellPhysics impl, LandCase c)
-    {
-        foreach (var invariant in Land.Append(ConformanceInvariants.LandDefs))
-        {
-            if (!invariant.IsTestable(impl))
-            {
-                continue;
-            }
-
-            var outcome = invariant.Check(impl, c);
-            if (outcome.IsViolation)
-            {
-                return new Violation(invariant.Id, outcome.Message ?? "violated", c.ToString()) { Case = c };
-            }
-        }
-
-        return null;
-    }
+    /// <returns>The first violation in judge order, or null when all hold.</returns>
+    public static Violation? CheckLandCase(ICellPhysics impl, LandCase c) => Judges.First(impl, c);
 
     /// <summary>
     /// Checks a walk: every testable walk invariant on the walk, then every testable outdoor invariant on the query
-    /// of each step (as the reference answers them, so the queries are the ones a correct client would ask).
+    /// of each step (as the reference answers them, so the queries are the ones a correct client would ask), then
+    /// FIND-CELL-CONFORMANCE (<see cref="Judges"/>).
     /// </summary>
     /// <param name="impl">The implementation under test.</param>
     /// <param name="walk">The walk.</param>
     /// <returns>The first violation, or null.</returns>
-    public static Violation? CheckWalk(ICellPhysics impl, Walk walk)
-    {
-        foreach (var invariant in WalkInvariants.All)
-        {
-            if (invariant.IsTestable(impl) && invariant.Check(impl, walk) is { IsViolation: true } o)
-            {
-                return new Violation(invariant.Id, o.Message ?? "violated", walk.ToString()) { Case = walk };
-            }
-        }
+    public static Violation? CheckWalk(ICellPhysics impl, Walk walk) => Judges.First(impl, walk);
 
-        foreach (var step in WalkRunner.Run(ReferenceAdapter.Instance, walk))
-        {
-            foreach (var invariant in OutdoorInvariants.All.Append(ConformanceInvariants.OutsideCells))
-            {
-                if (invariant.IsTestable(impl) && invariant.Check(impl, step.Query) is { IsViolation: true } o)
-                {
-                    return new Violation(invariant.Id, $"step {step.Index}: {o.Message}", step.Query.ToString()) { Case = step.Query };
-                }
-            }
-        }
-
-        return CheckConformance(impl, new AnyWalk(walk, null));
-    }
-
-    /// <summary>Checks a corpus entry of any kind.</summary>
+    /// <summary>Checks a corpus entry of any kind (<see cref="Judges"/>).</summary>
     /// <param name="impl">The implementation under test.</param>
     /// <param name="entry">The entry.</param>
     /// <returns>The first violation, or null.</returns>
-    public static Violation? CheckEntry(ICellPhysics impl, CorpusEntry entry) =>
-        entry.Parts is { } parts ? CheckParts(impl, parts) : entry.SceneWalk is { } sw ? CheckSceneWalk(impl, sw) : entry.Walk is { } walk ? CheckWalk(impl, walk) : CheckLandCase(impl, entry.Case!.Value);
+    public static Violation? CheckEntry(ICellPhysics impl, CorpusEntry entry) => Judges.First(impl, entry.Item);
 
     /// <summary>Checks a parts query against every testable parts invariant (PARTS-COVERAGE, PARTS-SOUNDNESS).</summary>
     /// <param name="impl">The implementation under test.</param>
     /// <param name="c">The query.</param>
     /// <returns>The first violation in catalogue order, or null.</returns>
-    public static Violation? CheckParts(ICellPhysics impl, PartsCase c)
-    {
-        foreach (var invariant in PartsInvariants.All)
-        {
-            if (invariant.IsTestable(impl) && invariant.Check(impl, c) is { IsViolation: true } o)
-            {
-                return new Violation(invariant.Id, o.Message ?? "violated", c.ToString()) { Case = c };
-            }
-        }
+    public static Violation? CheckParts(ICellPhysics impl, PartsCase c) => Judges.First(impl, c);
 
-        return null;
-    }
-
-    /// <summary>Checks a scene walk against every testable scene invariant.</summary>
+    /// <summary>Checks a scene walk against every testable scene invariant, then FIND-CELL-CONFORMANCE (<see cref="Judges"/>).</summary>
     /// <param name="impl">The implementation under test.</param>
     /// <param name="sw">The scene walk.</param>
     /// <returns>The first violation, or null.</returns>
-    public static Violation? CheckSceneWalk(ICellPhysics impl, SceneWalk sw)
-    {
-        foreach (var invariant in SceneInvariants)
-        {
-            if (invariant.IsTestable(impl) && invariant.Check(impl, sw) is { IsViolation: true } o)
-            {
-                return new Violation(invariant.Id, o.Message ?? "violated", sw.ToString()) { Case = sw };
-            }
-        }
-
-        return CheckConformance(impl, new AnyWalk(null, sw));
-    }
-
-    private static Violation? CheckConformance(ICellPhysics impl, AnyWalk w)
-    {
-        var invariant = ConformanceInvariants.FindCell;
-        return invariant.IsTestable(impl) && invariant.Check(impl, w) is { IsViolation: true } o
-            ? new Violation(invariant.Id, o.Message ?? "violated", w.ToString()) { Case = w.Inner }
-            : null;
-    }
+    public static Violation? CheckSceneWalk(ICellPhysics impl, SceneWalk sw) => Judges.First(impl, sw);
 }

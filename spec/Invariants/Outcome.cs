@@ -29,6 +29,15 @@ public readonly record struct Outcome(Verdict Verdict, string? Message)
     /// <returns>The outcome.</returns>
     public static Outcome Violated(string message) => new(Verdict.Violated, message);
 
+    /// <summary>Returns a violation at one step of a walk (the message says so in its own words too).</summary>
+    /// <param name="step">The step index (0: the start).</param>
+    /// <param name="message">Observed against expected.</param>
+    /// <returns>The outcome.</returns>
+    public static Outcome ViolatedAt(int step, string message) => new(Verdict.Violated, message) { Step = step };
+
+    /// <summary>Gets the step of a walk the violation is at, or null when it is not at one step (or the case is not a walk).</summary>
+    public int? Step { get; init; }
+
     /// <summary>Gets a value indicating whether this is a violation.</summary>
     public bool IsViolation => Verdict == Verdict.Violated;
 }

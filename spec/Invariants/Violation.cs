@@ -1,3 +1,5 @@
+using AcPhys.Spec.Cases;
+
 namespace AcPhys.Spec.Invariants;
 
 /// <summary>A broken invariant on a concrete case.</summary>
@@ -6,8 +8,11 @@ namespace AcPhys.Spec.Invariants;
 /// <param name="CaseText">The case, printed in its one-line replayable form.</param>
 public sealed record Violation(string InvariantId, string Message, string CaseText)
 {
-    /// <summary>Gets the case object itself (a LandCase, OutdoorCase or Walk), when known, so it can be written to a file.</summary>
-    public object? Case { get; init; }
+    /// <summary>Gets the case itself, when known, so it can be written to a file and judged again.</summary>
+    public AnyCase? Case { get; init; }
+
+    /// <summary>Gets the step of a walk the violation is at (0: the start), or null when it is not at one step.</summary>
+    public int? Step { get; init; }
 
     /// <summary>Formats the violation on one line.</summary>
     /// <returns>The text.</returns>

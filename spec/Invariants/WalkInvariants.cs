@@ -42,7 +42,8 @@ public static class WalkInvariants
                 if (step.Containing.IsNone || !Oracle.IsLandCellOnMap(step.Containing) || Distance(step.Containing, x, y) > TieBand)
                 {
                     long gx = (long)Math.Floor(x / 24), gy = (long)Math.Floor(y / 24);
-                    return Outcome.Violated(
+                    return Outcome.ViolatedAt(
+                        step.Index,
                         $"step {step.Index}: containing {step.Containing} but sphere 0's centre is at world ({x:R}, {y:R}) in {Oracle.CellOf((int)gx, (int)gy)}; current stays {step.Current}");
                 }
             }
@@ -100,13 +101,13 @@ public static class WalkInvariants
                 {
                     if (!Oracle.IsLandCellOnMap(id))
                     {
-                        return Outcome.Violated($"step {step.Index}: candidate {id} is not a land cell on the map");
+                        return Outcome.ViolatedAt(step.Index, $"step {step.Index}: candidate {id} is not a land cell on the map");
                     }
                 }
 
                 if (!step.Containing.IsNone && !Oracle.IsLandCellOnMap(step.Containing))
                 {
-                    return Outcome.Violated($"step {step.Index}: containing {step.Containing} is not a land cell on the map");
+                    return Outcome.ViolatedAt(step.Index, $"step {step.Index}: containing {step.Containing} is not a land cell on the map");
                 }
             }
 

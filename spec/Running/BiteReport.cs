@@ -36,7 +36,11 @@ public enum BugStatus
 /// <param name="InvariantId">The invariant.</param>
 /// <param name="Verdict">The verdict over all seeds.</param>
 /// <param name="SeedsCaught">Under how many seeds it caught the bug.</param>
-public sealed record BiteCell(string InvariantId, BiteVerdict Verdict, int SeedsCaught);
+public sealed record BiteCell(string InvariantId, BiteVerdict Verdict, int SeedsCaught)
+{
+    /// <summary>Gets the violation of the first seed that caught the bug (shrunk, with its case), or null when none did.</summary>
+    public Violation? Violation { get; init; }
+}
 
 /// <summary>The first catch of a bug: which invariant, its shrunk violation and the seed that replays it.</summary>
 /// <param name="InvariantId">The invariant that caught it soonest under the first seed.</param>

@@ -50,6 +50,7 @@ public static class BiteRunner
         var impl = PlantedFaults.Create(bug.Fault);
         var caught = new int[invariants.Count];
         var applicable = new bool[invariants.Count];
+        var found = new Violation?[invariants.Count];
         var times = new List<TimeSpan?>();
         var cases = new List<int?>();
         BiteExample? example = null;
@@ -73,6 +74,7 @@ public static class BiteRunner
                 }
 
                 caught[i]++;
+                found[i] ??= result.Violation;
                 var t = result.TimeToFailure ?? result.Elapsed;
                 if (soonest is null || t < soonest)
                 {
@@ -92,7 +94,7 @@ public static class BiteRunner
         var cells = invariants.Select((inv, i) => new BiteCell(
             inv.Id,
             !applicable[i] ? BiteVerdict.NotApplicable : caught[i] == seeds ? BiteVerdict.Caught : caught[i] > 0 ? BiteVerdict.Sometimes : BiteVerdict.NotCaught,
-            caught[i])).ToList();
+            caught[i]) { Violation = found[i] }).ToList();
         var status = times.All(t => t is not null) ? BugStatus.Caught : BugStatus.Escaped;
         return new BugBite(bug, status, cells, times, cases, example);
     }

@@ -119,7 +119,7 @@ public static class CatalogueRunner
                 if (failing)
                 {
                     timeToFailure = stopwatch.Elapsed;
-                    firstSeen = new Violation(invariant.Id, outcome.Message ?? "violated", c?.ToString() ?? string.Empty) { Case = Stored(c) };
+                    firstSeen = new Violation(invariant.Id, outcome.Message ?? "violated", c?.ToString() ?? string.Empty) { Case = AnyCase.Of(c), Step = outcome.Step };
                 }
             }
 
@@ -239,19 +239,16 @@ public static class CatalogueRunner
     private static Violation? ViolationOf<TCase>(Invariant<TCase> invariant, ICellPhysics impl, TCase c, IReadOnlyList<string> excluded)
     {
         var outcome = Check(invariant, impl, c, excluded);
-        return outcome.IsViolation ? new Violation(invariant.Id, outcome.Message ?? "violated", c?.ToString() ?? string.Empty) { Case = Stored(c) } : null;
+        return outcome.IsViolation ? new Violation(invariant.Id, outcome.Message ?? "violated", c?.ToString() ?? string.Empty) { Case = AnyCase.Of(c), Step = outcome.Step } : null;
     }
-
-    // The case as reports and corpus files hold it: a walk of either kind is stored as the walk itself.
-    private static object? Stored(object? c) => c is AnyWalk any ? any.Inner : c;
 
     // The stored case back as the invariant's case type (a stored walk of either kind is an AnyWalk again), so an
     // invariant over AnyWalk (FIND-CELL-CONFORMANCE) keeps searching for further failure classes as every other does.
-    private static object? Typed<TCase>(object? stored) => stored switch
+    private static object? Typed<TCase>(AnyCase? stored) => stored switch
     {
-        TCase => stored,
-        Walk w when typeof(TCase) == typeof(AnyWalk) => new AnyWalk(w, null),
-        SceneWalk sw when typeof(TCase) == typeof(AnyWalk) => new AnyWalk(null, sw),
+        { Value: TCase value } => value,
+        AnyCase.OutdoorWalk w when typeof(TCase) == typeof(AnyWalk) => new AnyWalk(w.Walk, null),
+        AnyCase.WalkInScene sw when typeof(TCase) == typeof(AnyWalk) => new AnyWalk(null, sw.Walk),
         _ => null,
     };
 }
