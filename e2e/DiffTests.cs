@@ -54,7 +54,7 @@ public sealed class DiffTests
 
         // One replayable case file and one side-by-side file per class; summary.md lists every class.
         Assert.Equal(counts.Count, Directory.GetFiles(dir, "DIFF-OUTSIDE-CELLS-*.diff.md").Length);
-        Assert.InRange(Directory.GetFiles(dir, "DIFF-OUTSIDE-CELLS-*.json").Length, 1, counts.Count); // a query with no spheres has no file form
+        Assert.InRange(Directory.GetFiles(dir, "DIFF-OUTSIDE-CELLS-*.json").Length, 1, counts.Count); // one file per class (a query is stored as asked, spheres or none)
         string summary = File.ReadAllText(Path.Combine(dir, "summary.md"));
         Assert.Contains("| `DIFF-OUTSIDE-CELLS` | D2 |", summary, StringComparison.Ordinal);
         Assert.Contains("diff: 1 checks, 0 same, 1 differ, 0 not compared; " + counts.Count + " divergence classes over " + header.Groups[1].Value + " inputs", run.Out, StringComparison.Ordinal);

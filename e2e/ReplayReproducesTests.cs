@@ -1,3 +1,4 @@
+using AcPhys.E2E.Support;
 using AcPhys.Fuzz.Targets;
 using AcPhys.Spec.Corpus;
 
@@ -86,9 +87,9 @@ public sealed class ReplayReproducesTests
     public void WalkFromANonCellIsNotAReferenceViolation(string start)
     {
         string file = Path.Combine(Directory.CreateTempSubdirectory("acphys-reproduce-").FullName, "walk.json");
-        File.WriteAllText(file, $$"""
-            {"format":"acphys-case","version":1,"kind":"walk","title":"from {{start}}","foundBy":"hand","catches":[],
-             "walk":{"start":{"cell":"{{start}}","x":100,"y":100,"z":0},"body":[{"x":0,"y":0,"z":0.5,"r":0.5}],"steps":[[30,0],[30,0],[0,30]]}}
+        File.WriteAllText(file, $$$"""
+            {"format":"acphys-case","version":1,"kind":"walk","title":"from {{{start}}}","foundBy":"hand","catches":[],
+             "walk":{"start":{"cell":"{{{start}}}","x":100,"y":100,"z":0},"body":[{"x":0,"y":0,"z":0.5,"r":0.5}],"steps":[[30,0],[30,0],[0,30]]}}
             """);
         var replay = Acphys.Run(["replay", file]);
         Assert.True(replay.Exit == 0, replay.ToString());
