@@ -14,6 +14,10 @@ namespace AcPhys.Props.Mutation;
 /// </summary>
 public sealed class KnownBugCatalogueTests(ITestOutputHelper output)
 {
+    // A fault that keeps state between calls fails by its history (no-reset: the previous query's cells stay in the
+    // array), which no case file holds: its file must still replay to a violation, but not necessarily of the same invariant.
+    private static readonly string[] KeepsState = [PlantedFaults.NoReset.Id];
+
     public static TheoryData<string> AvailableBugIds => new(KnownBugCatalogue.All.Where(b => b.IsAvailable).Select(b => b.Id));
 
     private static string Folder => Path.Combine(RepoPaths.Root, "mutation", "known-bugs");
@@ -150,7 +154,7 @@ public sealed class KnownBugCatalogueTests(ITestOutputHelper output)
             var replay = CaseReplay.Of(entry, PlantedFaults.Create(bug.Fault));
             string line = $"./acphys replay artifacts/failures/{FailureFile.NameFor(entry)} --fault {bug.Fault}";
             Assert.True(replay.ExitCode == CaseReplay.Violated, $"{bug.Id}: {cell.InvariantId}'s failure file does not reproduce (exit {replay.ExitCode}); {line}; case {violation.CaseText}");
-            Assert.True(replay.Run.Judgement.ViolatedIds.Contains(cell.InvariantId), $"{bug.Id}: {cell.InvariantId}'s failure file replays naming {string.Join(", ", replay.Run.Judgement.ViolatedIds)} only; {line}; case {violation.CaseText}");
+            Assert.True(KeepsState.Contains(bug.Fault) || replay.Run.Judgement.ViolatedIds.Contains(cell.InvariantId), $"{bug.Id}: {cell.InvariantId}'s failure file replays naming {string.Join(", ", replay.Run.Judgement.ViolatedIds)} only; {line}; case {violation.CaseText}");
             Assert.Equal(FinderNames.Verify, entry.FoundBy);
         }
     }

@@ -19,6 +19,8 @@ public static class CorpusJson
     /// <summary>The longest title a case file may carry, in characters (issue 19: a 50 MB title was echoed to stdout).</summary>
     public const int MaxTitle = 4096;
 
+    private const string EnterAndBack = "enter-and-back";
+
     private static readonly JsonWriterOptions WriterOptions = new() { Indented = true, Encoder = System.Text.Encodings.Web.JavaScriptEncoder.UnsafeRelaxedJsonEscaping };
 
     /// <summary>Serialises an entry.</summary>
@@ -65,6 +67,10 @@ public static class CorpusJson
                 w.WritePropertyName("scene");
                 Scenes.SceneJson.WriteValue(w, sw.Scene);
                 WalkJson.Write(w, sw.Walk);
+                if (sw.Route == SceneRoute.EnterAndBack)
+                {
+                    w.WriteString("route", EnterAndBack); // the one route an invariant reads (ENTER-EXIT)
+                }
             }
             else if (entry.Walk is { } walk)
             {
@@ -159,7 +165,9 @@ public static class CorpusJson
                     throw new CorpusFormatException(e.Message, e);
                 }
 
-                return header with { SceneWalk = new SceneWalk(scene, WalkJson.Read(Prop(root, "walk", source), source)) };
+                string? route = OptStr(root, "route", source);
+                Require(route is null or EnterAndBack, source, "$.route", $"expected \"{EnterAndBack}\" (the only route a stored scene walk names)");
+                return header with { SceneWalk = new SceneWalk(scene, WalkJson.Read(Prop(root, "walk", source), source)) { Route = route is null ? null : SceneRoute.EnterAndBack } };
             }
 
             if (kind == "query")

@@ -232,7 +232,7 @@ public static class IndoorInvariants
         SceneDomain.Instance,
         (impl, w) =>
         {
-            if (w.Recipe is not { Route: SceneRoute.EnterAndBack } || !ShortSteps(w))
+            if (w.Route is not SceneRoute.EnterAndBack || !ShortSteps(w))
             {
                 return Outcome.Vacuous;
             }
