@@ -94,7 +94,10 @@ public static class BiteRunner
         var cells = invariants.Select((inv, i) => new BiteCell(
             inv.Id,
             !applicable[i] ? BiteVerdict.NotApplicable : caught[i] == seeds ? BiteVerdict.Caught : caught[i] > 0 ? BiteVerdict.Sometimes : BiteVerdict.NotCaught,
-            caught[i]) { Violation = found[i] }).ToList();
+            caught[i])
+        {
+            Violation = found[i],
+        }).ToList();
         var status = times.All(t => t is not null) ? BugStatus.Caught : BugStatus.Escaped;
         return new BugBite(bug, status, cells, times, cases, example);
     }
