@@ -34,7 +34,7 @@ internal static class ServeCommand
         };
         var noLoad = new Option<bool>("--no-load-scene") { Description = "Do not announce load_scene: every find_cell carries its whole scene (as a server without it)." };
         var noDat = new Option<bool>("--no-dat-records") { Description = "Announce load_scene without dat_records: scenes arrive as the project's JSON, not as retail dat records." };
-        var noWalks = new Option<bool>("--no-walks") { Description = "Announce neither find_cell_walk nor batch: walks and independent queries travel one query per round trip (as a server without them)." };
+        var noWalks = new Option<bool>("--no-walks") { Description = "Do not announce find_cell_walk: walks travel one query per round trip (as a server without it)." };
         var command = new Command("serve", "Serve the reference core over protocol v1 on stdin/stdout (docs/protocol.md); ends at end of input.") { fault, pick, fidelity, noLoad, noDat, noWalks };
         command.SetAction(parse => Guard.Run("serve", () => Run(parse.GetValue(fault), parse.GetValue(pick), parse.GetValue(fidelity), parse.GetValue(noLoad), parse.GetValue(noDat), parse.GetValue(noWalks))));
         return command;

@@ -58,12 +58,6 @@ public enum Op
     /// </summary>
     FindCellWalk = 1 << 13,
 
-    /// <summary>
-    /// <c>batch</c>: several independent requests in one line, answered in one line in the same order (docs/protocol.md,
-    /// "Batches"); a transport capability.
-    /// </summary>
-    Batch = 1 << 14,
-
     /// <summary>Every LandDefs operation.</summary>
     LandDefs = BlockIdToLcoord | GidToLcoord | LcoordToGid | InboundValidCellId | GetOutsideLcoord | AdjustToOutside,
 
@@ -93,7 +87,6 @@ public static class OpNames
         (Op.LoadScene, "load_scene"),
         (Op.DatRecords, "dat_records"),
         (Op.FindCellWalk, "find_cell_walk"),
-        (Op.Batch, "batch"),
     ];
 
     /// <summary>Returns the protocol names of every flag set in <paramref name="ops"/>.</summary>

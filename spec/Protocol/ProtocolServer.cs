@@ -341,7 +341,7 @@ public sealed class ProtocolServer(ICellPhysics impl)
             w.WriteNumber("protocol", Wire.Version);
             w.WriteString("name", impl.Name);
             w.WriteStartArray("ops");
-            var ops = impl.Ops & ~(Op.LoadScene | Op.DatRecords | Op.FindCellWalk | Op.Batch);
+            var ops = impl.Ops & ~(Op.LoadScene | Op.DatRecords | Op.FindCellWalk);
             ops |= Walks && (ops & (Op.FindCell | Op.FindCellScene)) != 0 ? Op.FindCellWalk : Op.None; // threaded here (WalkThread)
             if (LoadScenes && (ops & Op.FindCellScene) != 0)
             {
