@@ -15,7 +15,8 @@ Seeded bugs, to see the suite catch a defect through the process protocol (--bug
     clamp-106    candidates and the containing pick clamped to the position's landblock (acdream #106)
     trunc-floor  get_outside_lcoord truncates x/24 toward zero instead of flooring (facts §6.2)
 
---ops NAME[,NAME...] announces only some ops (a partial implementation: the rest is reported as not tested).
+--ops NAME[,NAME...] announces only some ops (a partial implementation: the rest is reported as not tested). Without
+find_cell_walk among them the tool sends walks one find_cell per step, as to an implementation written before the op.
 """
 
 import argparse
