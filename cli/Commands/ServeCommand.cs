@@ -34,12 +34,13 @@ internal static class ServeCommand
         };
         var noLoad = new Option<bool>("--no-load-scene") { Description = "Do not announce load_scene: every find_cell carries its whole scene (as a server without it)." };
         var noDat = new Option<bool>("--no-dat-records") { Description = "Announce load_scene without dat_records: scenes arrive as the project's JSON, not as retail dat records." };
-        var command = new Command("serve", "Serve the reference core over protocol v1 on stdin/stdout (docs/protocol.md); ends at end of input.") { fault, pick, fidelity, noLoad, noDat };
-        command.SetAction(parse => Guard.Run("serve", () => Run(parse.GetValue(fault), parse.GetValue(pick), parse.GetValue(fidelity), parse.GetValue(noLoad), parse.GetValue(noDat))));
+        var noWalks = new Option<bool>("--no-walks") { Description = "Do not announce find_cell_walk: walks travel one query per round trip (as a server without it)." };
+        var command = new Command("serve", "Serve the reference core over protocol v1 on stdin/stdout (docs/protocol.md); ends at end of input.") { fault, pick, fidelity, noLoad, noDat, noWalks };
+        command.SetAction(parse => Guard.Run("serve", () => Run(parse.GetValue(fault), parse.GetValue(pick), parse.GetValue(fidelity), parse.GetValue(noLoad), parse.GetValue(noDat), parse.GetValue(noWalks))));
         return command;
     }
 
-    private static int Run(string? faultId, string? pickName, string? fidelityNames, bool noLoadScene, bool noDatRecords)
+    private static int Run(string? faultId, string? pickName, string? fidelityNames, bool noLoadScene, bool noDatRecords, bool noWalks)
     {
         if (!PickNames.TryParse(pickName, out var pick))
         {
@@ -77,7 +78,7 @@ internal static class ServeCommand
         int maxLine = Impl.LineLimitSetting.Read();
         using var input = Console.OpenStandardInput();
         using var output = new StreamWriter(Console.OpenStandardOutput(), new UTF8Encoding(false)) { NewLine = "\n" };
-        new ProtocolServer(impl) { LoadScenes = !noLoadScene, DatRecords = !noDatRecords }.Serve(input, output, maxLine);
+        new ProtocolServer(impl) { LoadScenes = !noLoadScene, DatRecords = !noDatRecords, Walks = !noWalks }.Serve(input, output, maxLine);
         return ExitCodes.Ok;
     }
 }

@@ -15,7 +15,8 @@ Seeded bugs, to see the suite catch a defect through the process protocol (--bug
     clamp-106    candidates and the containing pick clamped to the position's landblock (acdream #106)
     trunc-floor  get_outside_lcoord truncates x/24 toward zero instead of flooring (facts §6.2)
 
---ops NAME[,NAME...] announces only some ops (a partial implementation: the rest is reported as not tested).
+--ops NAME[,NAME...] announces only some ops (a partial implementation: the rest is reported as not tested). Without
+find_cell_walk among them the tool sends walks one find_cell per step, as to an implementation written before the op.
 """
 
 import argparse
@@ -31,7 +32,7 @@ CELL_LENGTH = 24.0          # metres per land cell side
 BLOCK_LENGTH = 192.0        # metres per landblock side
 EPSILON = struct.unpack("<f", struct.pack("<f", 0.0002))[0]   # facts §1.5, the float32 value of 0.0002f
 ALL_OPS = ["blockid_to_lcoord", "gid_to_lcoord", "lcoord_to_gid", "inbound_valid_cellid",
-           "get_outside_lcoord", "adjust_to_outside", "outside_cells", "find_cell"]
+           "get_outside_lcoord", "adjust_to_outside", "outside_cells", "find_cell", "find_cell_walk"]
 BUGS = ("clamp-106", "trunc-floor")
 
 
@@ -270,6 +271,29 @@ def find_cell(position, spheres, origin=(0.0, 0.0)):
     return cells, containing
 
 
+def find_cell_walk(cell, origin, current, body, steps):
+    """docs/protocol.md "Whole walks": the walk threaded as the tool threads it, one (cells, containing) per query.
+
+    Every operation is float32, as the client's own: each move is added to the position (z + 0 too), the body's
+    spheres are position + offset, and a containing cell re-frames the position by GetBlockOffset and becomes the
+    frame and the current cell; with no containing cell both are kept. (current does not change the retail pick.)"""
+    frame = cell
+    px, py, pz = origin
+    answers = []
+    for i in range(len(steps) + 1):
+        if i > 0:
+            dx, dy = steps[i - 1]
+            px, py, pz = f32(px + dx), f32(py + dy), f32(pz + 0.0)
+        spheres = [(f32(px + ox), f32(py + oy), f32(pz + oz), r) for (ox, oy, oz, r) in body]
+        cells, containing = find_cell(frame, spheres, (px, py))
+        answers.append((cells, containing))
+        if containing:
+            px = f32(px - BLOCK_LENGTH * (block_x(containing) - block_x(frame)))
+            py = f32(py - BLOCK_LENGTH * (block_y(containing) - block_y(frame)))
+            frame = current = containing
+    return answers
+
+
 # ---- the protocol --------------------------------------------------------------------------------------------------
 
 def lcoord_answer(lc):
@@ -307,6 +331,21 @@ def answer(request, ops):
             return {"error": "scenes not supported (open land only)"}
         cells, containing = find_cell(read_cell(request["cell"]), read_spheres(request["spheres"]), read_origin(request))
         return {"cells": [cell_text(c) for c in cells], "containing": cell_text(containing) if containing else None}
+    if op == "find_cell_walk":
+        if request.get("scene") is not None or "scene_id" in request:
+            return {"error": "scenes not supported (open land only)"}
+        o = request["origin"]
+        if not isinstance(o, dict):
+            raise BadRequest("origin must be an object {x, y, z}")
+        steps = request["steps"]
+        if not isinstance(steps, list):
+            raise BadRequest("steps must be a list")
+        current = request.get("current")
+        answers = find_cell_walk(read_cell(request["cell"]), (read_float(o["x"]), read_float(o["y"]), read_float(o["z"])),
+                                 read_cell(current) if current is not None else 0, read_spheres(request["body"]),
+                                 [(read_float(d["x"]), read_float(d["y"])) for d in steps])
+        return {"steps": [{"cells": [cell_text(c) for c in cells], "containing": cell_text(containing) if containing else None}
+                          for (cells, containing) in answers]}
     return {"error": "op %r not implemented" % (op,)}
 
 

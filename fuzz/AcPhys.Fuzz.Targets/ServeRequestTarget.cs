@@ -25,7 +25,7 @@ public sealed class ServeRequestTarget : FuzzTarget
         "\"op\"", "\"hello\"", "\"protocol\"", "\"blockid_to_lcoord\"", "\"gid_to_lcoord\"", "\"lcoord_to_gid\"", "\"inbound_valid_cellid\"",
         "\"get_outside_lcoord\"", "\"adjust_to_outside\"", "\"outside_cells\"", "\"find_cell\"", "\"find_cell_scene\"", "\"outside_cells_parts\"",
         "\"load_scene\"", "\"unload_scene\"", "\"scene_id\"", "\"s1\"", "\"scene\"", "\"dat\"", "\"manifest\"", "\"records\"", "\"cell\"",
-        "\"current\"", "\"load_cells\"", "\"spheres\"", "\"parts\"", "\"x\"", "\"y\"", "\"z\"", "\"r\"", "\"0x7F7F0001\"", "\"0xFFFF0100\"",
+        "\"current\"", "\"load_cells\"", "\"find_cell_walk\"", "\"origin\"", "\"body\"", "\"steps\"", "\"spheres\"", "\"parts\"", "\"x\"", "\"y\"", "\"z\"", "\"r\"", "\"0x7F7F0001\"", "\"0xFFFF0100\"",
         "\"NaN\"", "\"Infinity\"", "\"-Infinity\"", "null", "true", "false", "1e39", "-0", "2147483648", "\\u0000", "\\ud800",
         "[", "]", "{", "}", ":", ",", "\n",
     ];
@@ -145,6 +145,31 @@ public sealed class ServeRequestTarget : FuzzTarget
                 w.WriteString("op", "load_scene");
                 DatWire.WriteScene(w, "dat", SceneKit.Dungeon(new DungeonPlan((192.0 * 0x20) + 150, (192.0 * 0x21) + 30, 2, 8, 0, 0x33)));
             }),
+            ["walk-land"] = Wire.Line(w =>
+            {
+                w.WriteString("op", "find_cell_walk");
+                w.WriteNull("scene");
+                WalkWire.WriteFields(w, new WalkRequest(null, cell, new Vector3(50, 60, 0), body, [new Vector2(150, 0), new Vector2(-0.25f, 200)]));
+            }),
+            ["load-walk-unload"] = string.Join(
+                '\n',
+                Wire.Line(w =>
+                {
+                    w.WriteString("op", "load_scene");
+                    w.WritePropertyName("scene");
+                    w.WriteRawValue(SceneJson.WriteCompact(cottage));
+                }),
+                Wire.Line(w =>
+                {
+                    w.WriteString("op", "find_cell_walk");
+                    w.WriteString("scene_id", "s1");
+                    WalkWire.WriteFields(w, new WalkRequest(cottage, cell, new Vector3(50, 60, 0), body, [new Vector2(3, 0), new Vector2(0, 3)]) { LoadCells = true });
+                }),
+                Wire.Line(w =>
+                {
+                    w.WriteString("op", "unload_scene");
+                    w.WriteString("scene_id", "s1");
+                })),
             ["not-an-object"] = "[1,2,3]",
         };
         return lines.ToDictionary(kv => kv.Key, kv => Encoding.UTF8.GetBytes(kv.Value));

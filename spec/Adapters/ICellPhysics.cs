@@ -130,6 +130,16 @@ public interface ICellPhysics
     FindCellResult FindCell(CellId cell, System.Numerics.Vector3 origin, IReadOnlyList<Sphere> spheres, CellId current) => FindCell(cell, spheres, current);
 
     /// <summary>
+    /// <c>find_cell_walk</c>: a whole walk, one answer per query (the start, then each step), threaded by
+    /// <see cref="WalkThread"/> — the rule the tool's walk runners use. The default asks each query through the
+    /// single-query operations above, so an adapter that does not override it behaves exactly as when asked step by step;
+    /// an adapter across a process boundary overrides it to answer the walk in one round trip.
+    /// </summary>
+    /// <param name="walk">The walk.</param>
+    /// <returns>One answer per query, <see cref="WalkRequest.Queries"/> of them.</returns>
+    IReadOnlyList<FindCellResult> FindCellWalk(WalkRequest walk) => WalkThread.AskEach(this, walk);
+
+    /// <summary>
     /// Gets the documented indoor deviations the implementation declares (facts §7 #6–#13; retail when it says
     /// nothing). The conformance invariants compare it with the reference in the same mode, never failing it for them.
     /// </summary>

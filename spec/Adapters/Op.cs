@@ -52,6 +52,12 @@ public enum Op
     /// </summary>
     DatRecords = 1 << 12,
 
+    /// <summary>
+    /// <c>find_cell_walk</c>: a whole walk in one request, answered with every query's answer (docs/protocol.md, "Whole
+    /// walks"); a transport capability: the walk invariants need <see cref="FindCell"/> or <see cref="FindCellScene"/>.
+    /// </summary>
+    FindCellWalk = 1 << 13,
+
     /// <summary>Every LandDefs operation.</summary>
     LandDefs = BlockIdToLcoord | GidToLcoord | LcoordToGid | InboundValidCellId | GetOutsideLcoord | AdjustToOutside,
 
@@ -80,6 +86,7 @@ public static class OpNames
         (Op.FindCellTransition, "find_cell_transition"),
         (Op.LoadScene, "load_scene"),
         (Op.DatRecords, "dat_records"),
+        (Op.FindCellWalk, "find_cell_walk"),
     ];
 
     /// <summary>Returns the protocol names of every flag set in <paramref name="ops"/>.</summary>

@@ -1,5 +1,3 @@
-using System.Numerics;
-using AcPhys.Core;
 using AcPhys.Spec.Adapters;
 
 namespace AcPhys.Spec.Cases;
@@ -18,33 +16,7 @@ public static class SceneWalkRunner
     /// <returns>One record for the start query and one per step.</returns>
     public static IReadOnlyList<WalkStep> Run(ICellPhysics impl, SceneWalk sw, bool loadCells = false)
     {
-        var walk = sw.Walk;
-        var steps = new List<WalkStep>(walk.Steps.Count + 1);
-        var frame = walk.StartCell;
-        var position = walk.Start;
-        var current = CellId.None;
-        for (int i = 0; i <= walk.Steps.Count; i++)
-        {
-            if (i > 0)
-            {
-                var d = walk.Steps[i - 1];
-                position += new Vector3(d.X, d.Y, 0);
-            }
-
-            double worldX = (192.0 * frame.BlockX) + position.X, worldY = (192.0 * frame.BlockY) + position.Y;
-            var query = new OutdoorCase(frame, walk.SpheresAt(position));
-            var answer = impl.FindCell(sw.Scene, frame, query.Spheres, current, loadCells);
-            var before = position;
-            if (!answer.Containing.IsNone)
-            {
-                position -= LandDefs.GetBlockOffset(frame, answer.Containing);
-                frame = answer.Containing;
-                current = answer.Containing;
-            }
-
-            steps.Add(new WalkStep(i, query.Cell, before, worldX, worldY, query, answer.Cells, answer.Containing, current) { Answer = answer, LoadCells = loadCells });
-        }
-
-        return steps;
+        var request = WalkRunner.Request(sw.Walk, sw.Scene, loadCells);
+        return WalkRunner.Trace(request, impl.FindCellWalk(request), loadCells);
     }
 }

@@ -26,7 +26,8 @@ public sealed record WalkStep(int Index, CellId Frame, Vector3 Position, double 
 /// <summary>
 /// Runs a walk against an implementation as a client does: the current cell is threaded through find_cell step by
 /// step; after each answer the position is re-framed into the containing cell's block (GetBlockOffset). When the
-/// answer is none, the client keeps its current cell and frame (that is what a freeze looks like).
+/// answer is none, the client keeps its current cell and frame (that is what a freeze looks like). The walk is asked
+/// whole (<see cref="ICellPhysics.FindCellWalk"/>) and its answers threaded by the same rule (<see cref="WalkThread"/>).
 /// </summary>
 public static class WalkRunner
 {
@@ -36,32 +37,47 @@ public static class WalkRunner
     /// <returns>One record for the start query and one per step.</returns>
     public static IReadOnlyList<WalkStep> Run(ICellPhysics impl, Walk walk)
     {
-        var steps = new List<WalkStep>(walk.Steps.Count + 1);
-        var frame = walk.StartCell;
-        var position = walk.Start;
-        var current = CellId.None;
-        for (int i = 0; i <= walk.Steps.Count; i++)
+        var request = Request(walk, null);
+        return Trace(request, impl.FindCellWalk(request), loadCells: false);
+    }
+
+    /// <summary>Returns the walk as a whole-walk request (<see cref="ICellPhysics.FindCellWalk"/>).</summary>
+    /// <param name="walk">The walk.</param>
+    /// <param name="scene">The scene, or null for open land.</param>
+    /// <param name="loadCells">True to ask each step as a movement transition.</param>
+    /// <returns>The request.</returns>
+    public static WalkRequest Request(Walk walk, Scenes.Scene? scene, bool loadCells = false) =>
+        new(scene, walk.StartCell, walk.Start, [.. walk.Body.Select(b => new Sphere(b.Offset, b.Radius))], walk.Steps) { LoadCells = loadCells };
+
+    /// <summary>
+    /// Threads a walk's answers by <see cref="WalkThread"/> into step records: each record holds the query the rule asks
+    /// at that step and the answer given for it.
+    /// </summary>
+    /// <param name="walk">The walk asked.</param>
+    /// <param name="answers">One answer per query.</param>
+    /// <param name="loadCells">Whether the steps were asked as movement transitions.</param>
+    /// <returns>One record for the start query and one per step.</returns>
+    /// <exception cref="InvalidOperationException">The answers are not one per query (an adapter's defect).</exception>
+    public static IReadOnlyList<WalkStep> Trace(WalkRequest walk, IReadOnlyList<FindCellResult> answers, bool loadCells)
+    {
+        if (answers.Count != walk.Queries)
         {
-            if (i > 0)
-            {
-                var d = walk.Steps[i - 1];
-                position += new Vector3(d.X, d.Y, 0);
-            }
+            throw new InvalidOperationException($"a walk of {walk.Queries} queries was answered with {answers.Count} answers");
+        }
+
+        var steps = new List<WalkStep>(walk.Queries);
+        var thread = new WalkThread(walk);
+        while (thread.MoveNext())
+        {
+            var frame = thread.Frame;
+            var position = thread.Position;
 
             // The world point of the position the client holds (float32 drift included): re-framing preserves it.
             double worldX = (192.0 * frame.BlockX) + position.X, worldY = (192.0 * frame.BlockY) + position.Y;
-
-            var query = new OutdoorCase(frame, walk.SpheresAt(position)) { Origin = position };
-            var answer = impl.FindCell(frame, position, query.Spheres, current);
-            var before = position;
-            if (!answer.Containing.IsNone)
-            {
-                position -= LandDefs.GetBlockOffset(frame, answer.Containing);
-                frame = answer.Containing;
-                current = answer.Containing;
-            }
-
-            steps.Add(new WalkStep(i, query.Cell, before, worldX, worldY, query, answer.Cells, answer.Containing, current) { Answer = answer });
+            var query = new OutdoorCase(frame, thread.Spheres()) { Origin = walk.Scene is null ? position : default };
+            var answer = answers[thread.Index];
+            thread.Take(answer.Containing);
+            steps.Add(new WalkStep(thread.Index, frame, position, worldX, worldY, query, answer.Cells, answer.Containing, thread.Current) { Answer = answer, LoadCells = loadCells });
         }
 
         return steps;

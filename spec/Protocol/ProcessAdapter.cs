@@ -224,7 +224,49 @@ public sealed class ProcessAdapter : ICellPhysics, IDisposable
                 w.WriteBoolean("load_cells", true);
             }, ReadFindCell);
 
+    /// <summary>
+    /// <c>find_cell_walk</c>: the whole walk in one round trip when the implementation announced it (docs/protocol.md,
+    /// "Whole walks"); otherwise, or for a walk longer than <see cref="WalkWire.MaxSteps"/>, query by query as before.
+    /// </summary>
+    /// <param name="walk">The walk.</param>
+    /// <returns>One answer per query.</returns>
+    public IReadOnlyList<FindCellResult> FindCellWalk(WalkRequest walk)
+    {
+        if ((Ops & Op.FindCellWalk) == 0 || walk.Steps.Count > WalkWire.MaxSteps)
+        {
+            return WalkThread.AskEach(this, walk);
+        }
+
+        // The op a step-by-step walk would need: a missing one is NotSupportedException, as it is there.
+        var needs = walk.LoadCells ? Op.FindCellTransition : walk.Scene is null ? Op.FindCell : Op.FindCellScene;
+        return Call(
+            needs,
+            "find_cell_walk",
+            w =>
+            {
+                SceneField(w, walk.Scene);
+                WalkWire.WriteFields(w, walk);
+            },
+            a => WalkWire.ReadAnswer(a, walk.Queries));
+    }
+
     private void FindCellFields(Utf8JsonWriter w, Scene? scene, CellId cell, IReadOnlyList<Sphere> spheres, CellId current)
+    {
+        SceneField(w, scene);
+
+        Wire.WriteCell(w, "cell", cell);
+        Wire.WriteSpheres(w, "spheres", spheres);
+        if (current.IsNone)
+        {
+            w.WriteNull("current");
+        }
+        else
+        {
+            Wire.WriteCell(w, "current", current);
+        }
+    }
+
+    private void SceneField(Utf8JsonWriter w, Scene? scene)
     {
         if (scene is null)
         {
@@ -237,17 +279,6 @@ public sealed class ProcessAdapter : ICellPhysics, IDisposable
         else
         {
             WriteScene(w, scene);
-        }
-
-        Wire.WriteCell(w, "cell", cell);
-        Wire.WriteSpheres(w, "spheres", spheres);
-        if (current.IsNone)
-        {
-            w.WriteNull("current");
-        }
-        else
-        {
-            Wire.WriteCell(w, "current", current);
         }
     }
 

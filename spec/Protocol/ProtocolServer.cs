@@ -29,6 +29,9 @@ public sealed class ProtocolServer(ICellPhysics impl)
     /// <summary>Gets or initializes a value indicating whether the server announces <c>dat_records</c> with <c>load_scene</c> (true by default: scenes then arrive as dat records).</summary>
     public bool DatRecords { get; init; } = true;
 
+    /// <summary>Gets or initializes a value indicating whether the server announces <c>find_cell_walk</c> (true by default; false serves as an older server would: walks come query by query).</summary>
+    public bool Walks { get; init; } = true;
+
     /// <summary>Reads requests until end of input, answering each on its own line.</summary>
     /// <param name="input">Requests, UTF-8 lines.</param>
     /// <param name="output">Answers (flushed after each).</param>
@@ -131,6 +134,11 @@ public sealed class ProtocolServer(ICellPhysics impl)
                 }
         }
 
+        if (op == "find_cell_walk")
+        {
+            return FindCellWalk(request);
+        }
+
         var known = OpNames.Parse([op], out _);
         if (known == Op.None)
         {
@@ -200,31 +208,9 @@ public sealed class ProtocolServer(ICellPhysics impl)
 
             case Op.FindCell:
                 {
-                    Scene? scene = null;
-                    var sceneField = request.TryGetProperty("scene_id", out var sceneId) ? default : Wire.Field(request, "scene");
-                    if (sceneId.ValueKind != JsonValueKind.Undefined)
+                    if (SceneOf(request, "find_cell", out var scene) is string refused)
                     {
-                        string id = Wire.ReadString(request, "scene_id");
-                        lock (loadedScenes)
-                        {
-                            if (!loadedScenes.TryGetValue(id, out scene))
-                            {
-                                return Error($"unknown scene_id \"{Wire.Brief(id, 40)}\" (load_scene first)");
-                            }
-                        }
-                    }
-                    else if (sceneField.ValueKind != JsonValueKind.Null)
-                    {
-                        if ((impl.Ops & Op.FindCellScene) == 0)
-                        {
-                            return Error($"scenes not served by {impl.Name} (it does not offer find_cell_scene)");
-                        }
-
-                        scene = ReadScene(sceneField);
-                    }
-                    else if ((impl.Ops & Op.FindCell) == 0)
-                    {
-                        return Error($"op \"find_cell\" on open land not offered by {impl.Name}");
+                        return refused;
                     }
 
                     bool loadCells = request.TryGetProperty("load_cells", out _) && Wire.ReadBool(request, "load_cells");
@@ -248,6 +234,58 @@ public sealed class ProtocolServer(ICellPhysics impl)
             default:
                 return Error($"unknown op \"{Wire.Brief(op, 64)}\"");
         }
+    }
+
+    // find_cell_walk: the walk threaded here by the rule the tool's runners use (WalkThread), one answer per query.
+    private string FindCellWalk(JsonElement request)
+    {
+        if (SceneOf(request, "find_cell_walk", out var scene) is string refused)
+        {
+            return refused;
+        }
+
+        var walk = WalkWire.ReadFields(request, scene);
+        if (walk.LoadCells && (impl.Ops & Op.FindCellTransition) == 0)
+        {
+            return Error($"transition queries (load_cells) not served by {impl.Name} (it does not offer find_cell_transition)");
+        }
+
+        var answers = impl.FindCellWalk(walk);
+        return Wire.Line(w => WalkWire.WriteAnswer(w, answers));
+    }
+
+    // The scene a find_cell or find_cell_walk request names: scene_id (loaded), an inline scene, or null (open land).
+    // Returns the error answer when the request cannot be served, else null.
+    private string? SceneOf(JsonElement request, string op, out Scene? scene)
+    {
+        scene = null;
+        var sceneField = request.TryGetProperty("scene_id", out var sceneId) ? default : Wire.Field(request, "scene");
+        if (sceneId.ValueKind != JsonValueKind.Undefined)
+        {
+            string id = Wire.ReadString(request, "scene_id");
+            lock (loadedScenes)
+            {
+                if (!loadedScenes.TryGetValue(id, out scene))
+                {
+                    return Error($"unknown scene_id \"{Wire.Brief(id, 40)}\" (load_scene first)");
+                }
+            }
+        }
+        else if (sceneField.ValueKind != JsonValueKind.Null)
+        {
+            if ((impl.Ops & Op.FindCellScene) == 0)
+            {
+                return Error($"scenes not served by {impl.Name} (it does not offer find_cell_scene)");
+            }
+
+            scene = ReadScene(sceneField);
+        }
+        else if ((impl.Ops & Op.FindCell) == 0)
+        {
+            return Error($"op \"{op}\" on open land not offered by {impl.Name}");
+        }
+
+        return null;
     }
 
     private string LoadScene(JsonElement request)
@@ -303,7 +341,8 @@ public sealed class ProtocolServer(ICellPhysics impl)
             w.WriteNumber("protocol", Wire.Version);
             w.WriteString("name", impl.Name);
             w.WriteStartArray("ops");
-            var ops = impl.Ops & ~(Op.LoadScene | Op.DatRecords);
+            var ops = impl.Ops & ~(Op.LoadScene | Op.DatRecords | Op.FindCellWalk);
+            ops |= Walks && (ops & (Op.FindCell | Op.FindCellScene)) != 0 ? Op.FindCellWalk : Op.None; // threaded here (WalkThread)
             if (LoadScenes && (ops & Op.FindCellScene) != 0)
             {
                 ops |= Op.LoadScene; // the server holds the scenes; the implementation behind it needs nothing for it

@@ -16,7 +16,7 @@ namespace RecordAdapter;
 internal sealed class Server
 {
     private const int MaxScenes = 16;
-    private const string HelloAnswer = """{"protocol":1,"name":"record-adapter (example)","ops":["find_cell_scene","find_cell_transition","load_scene","dat_records"],"pick":"retail"}""";
+    private const string HelloAnswer = """{"protocol":1,"name":"record-adapter (example)","ops":["find_cell_scene","find_cell_transition","load_scene","dat_records","find_cell_walk"],"pick":"retail"}""";
     private static readonly JsonWriterOptions Compact = new() { Encoder = JavaScriptEncoder.UnsafeRelaxedJsonEscaping };
 
     private readonly Dictionary<string, CellScene> scenes = new(StringComparer.Ordinal);
@@ -42,6 +42,7 @@ internal sealed class Server
                 "hello" => Hello(request),
                 "load_scene" => LoadScene(request),
                 "find_cell" => FindCell(request),
+                "find_cell_walk" => FindCellWalk(request),
                 "unload_scene" => UnloadScene(request),
                 var op => Error($"unknown op \"{op}\""),
             };
@@ -147,64 +148,129 @@ internal sealed class Server
         return scenes.Remove(id) ? """{"ok":true}""" : Error($"unload_scene: unknown scene_id \"{id}\"");
     }
 
-    private string FindCell(JsonElement request)
+    private CellScene LoadedScene(JsonElement request, string op)
     {
         if (!request.TryGetProperty("scene_id", out _))
         {
-            return Error("find_cell: this adapter answers loaded scenes only (field \"scene_id\" from load_scene)");
+            throw new InputException($"{op}: this adapter answers loaded scenes only (field \"scene_id\" from load_scene)");
         }
 
         string id = Text(request, "scene_id");
-        if (!scenes.TryGetValue(id, out var scene))
+        return scenes.TryGetValue(id, out var scene) ? scene : throw new InputException($"{op}: unknown scene_id \"{id}\" (load_scene first)");
+    }
+
+    private static bool LoadCells(JsonElement request) => request.TryGetProperty("load_cells", out var lc) && lc.ValueKind switch
+    {
+        JsonValueKind.True => true,
+        JsonValueKind.False => false,
+        JsonValueKind.Null => false,
+        _ => throw new InputException("field \"load_cells\" must be true or false"),
+    };
+
+    private static Sphere[] Spheres(JsonElement request, string name)
+    {
+        if (!request.TryGetProperty(name, out var list) || list.ValueKind != JsonValueKind.Array)
         {
-            return Error($"find_cell: unknown scene_id \"{id}\" (load_scene first)");
+            throw new InputException($"field \"{name}\" must be an array of {{x, y, z, r}}");
         }
 
-        var cell = Cell(request.TryGetProperty("cell", out var c) ? c : default, "cell");
-        var current = request.TryGetProperty("current", out var cur) && cur.ValueKind != JsonValueKind.Null ? Cell(cur, "current") : CellId.None;
-        bool loadCells = request.TryGetProperty("load_cells", out var lc) && lc.ValueKind switch
-        {
-            JsonValueKind.True => true,
-            JsonValueKind.False => false,
-            _ => throw new InputException("field \"load_cells\" must be true or false"),
-        };
-        if (!request.TryGetProperty("spheres", out var list) || list.ValueKind != JsonValueKind.Array)
-        {
-            throw new InputException("field \"spheres\" must be an array of {x, y, z, r}");
-        }
-
-        var spheres = list.EnumerateArray().Select(s => s.ValueKind == JsonValueKind.Object
+        return [.. list.EnumerateArray().Select(s => s.ValueKind == JsonValueKind.Object
             ? new Sphere(new Vector3(Float(s, "x"), Float(s, "y"), Float(s, "z")), Float(s, "r"))
-            : throw new InputException("field \"spheres\" must be an array of {x, y, z, r}")).ToArray();
+            : throw new InputException($"field \"{name}\" must be an array of {{x, y, z, r}}"))];
+    }
 
-        // What ReferenceAdapter does for a scene: find_cell_list with the retail pick; load_cells turns the filter off.
-        var result = SceneQuery.FindCellList(array, scene, cell, spheres, current, new CellQueryOptions(PickPolicy.Retail, true, loadCells));
+    private static CellId Current(JsonElement request) =>
+        request.TryGetProperty("current", out var cur) && cur.ValueKind != JsonValueKind.Null ? Cell(cur, "current") : CellId.None;
+
+    private string FindCell(JsonElement request)
+    {
+        var scene = LoadedScene(request, "find_cell");
+        var cell = Cell(request.TryGetProperty("cell", out var c) ? c : default, "cell");
+        var current = Current(request);
+        bool loadCells = LoadCells(request);
+        var spheres = Spheres(request, "spheres");
+        return Line(w => Query(w, scene, cell, spheres, current, loadCells));
+    }
+
+    // find_cell_walk (docs/protocol.md, "Whole walks"): the walk threaded by the contract's rule, in float32 as a
+    // client holds its position: add the move, ask from the frame cell with the body at the position, and on a
+    // containing cell re-frame by GetBlockOffset and make it the frame and the current cell.
+    private string FindCellWalk(JsonElement request)
+    {
+        var scene = LoadedScene(request, "find_cell_walk");
+        var frame = Cell(request.TryGetProperty("cell", out var c) ? c : default, "cell");
+        var current = Current(request);
+        bool loadCells = LoadCells(request);
+        var body = Spheres(request, "body");
+        if (!request.TryGetProperty("origin", out var o) || o.ValueKind != JsonValueKind.Object)
+        {
+            throw new InputException("field \"origin\" must be an object {x, y, z}");
+        }
+
+        var position = new Vector3(Float(o, "x"), Float(o, "y"), Float(o, "z"));
+        if (!request.TryGetProperty("steps", out var list) || list.ValueKind != JsonValueKind.Array)
+        {
+            throw new InputException("field \"steps\" must be an array of {x, y}");
+        }
+
+        var moves = list.EnumerateArray().Select(s => s.ValueKind == JsonValueKind.Object
+            ? new Vector2(Float(s, "x"), Float(s, "y"))
+            : throw new InputException("field \"steps\" must be an array of {x, y}")).ToArray();
         return Line(w =>
         {
-            w.WriteStartArray("cells");
-            for (int i = 0; i < array.Count; i++)
+            w.WriteStartArray("steps");
+            for (int i = 0; i <= moves.Length; i++)
             {
-                w.WriteStringValue(CellIdText.Format(array[i].Id));
+                if (i > 0)
+                {
+                    position += new Vector3(moves[i - 1].X, moves[i - 1].Y, 0);
+                }
+
+                var spheres = body.Select(b => new Sphere(position + b.Center, b.Radius)).ToArray();
+                w.WriteStartObject();
+                var containing = Query(w, scene, frame, spheres, current, loadCells);
+                w.WriteEndObject();
+                if (!containing.IsNone)
+                {
+                    position -= LandDefs.GetBlockOffset(frame, containing);
+                    frame = containing;
+                    current = containing;
+                }
             }
 
             w.WriteEndArray();
-            if (result.Containing.IsNone)
-            {
-                w.WriteNull("containing");
-            }
-            else
-            {
-                w.WriteString("containing", CellIdText.Format(result.Containing));
-            }
-
-            w.WriteStartArray("loaded");
-            for (int i = 0; i < array.Count; i++)
-            {
-                w.WriteBooleanValue(array[i].Loaded);
-            }
-
-            w.WriteEndArray();
-            w.WriteBoolean("hits_interior_cell", result.HitsInteriorCell);
         });
+    }
+
+    // One find_cell_list, its answer's fields written; returns the containing cell.
+    private CellId Query(Utf8JsonWriter w, CellScene scene, CellId cell, Sphere[] spheres, CellId current, bool loadCells)
+    {
+        // What ReferenceAdapter does for a scene: find_cell_list with the retail pick; load_cells turns the filter off.
+        var result = SceneQuery.FindCellList(array, scene, cell, spheres, current, new CellQueryOptions(PickPolicy.Retail, true, loadCells));
+        w.WriteStartArray("cells");
+        for (int i = 0; i < array.Count; i++)
+        {
+            w.WriteStringValue(CellIdText.Format(array[i].Id));
+        }
+
+        w.WriteEndArray();
+        if (result.Containing.IsNone)
+        {
+            w.WriteNull("containing");
+        }
+        else
+        {
+            w.WriteString("containing", CellIdText.Format(result.Containing));
+        }
+
+        w.WriteStartArray("loaded");
+        for (int i = 0; i < array.Count; i++)
+        {
+            w.WriteBooleanValue(array[i].Loaded);
+        }
+
+        w.WriteEndArray();
+        w.WriteBoolean("hits_interior_cell", result.HitsInteriorCell);
+        return result.Containing;
     }
 }
