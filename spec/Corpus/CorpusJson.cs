@@ -133,6 +133,7 @@ public static class CorpusJson
             if (root.TryGetProperty("catches", out var c))
             {
                 Require(c.ValueKind == JsonValueKind.Array, source, "$.catches", "expected an array of fault ids");
+                Refuse(Values.CatchList.Problem(c.GetArrayLength()), source, "$.catches");
                 int i = 0;
                 foreach (var item in c.EnumerateArray())
                 {

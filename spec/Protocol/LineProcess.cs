@@ -16,6 +16,7 @@ internal sealed class LineProcess : IDisposable
 {
     private const int TailLines = 20;
     private const int SigKill = 9;
+    private const int MaxStderrChars = 1000;
 
     // On Linux and macOS the implementation runs as the leader of its own process group (setsid), with a watcher in
     // that group that ends the group once acphys is gone: SIGKILL of acphys included, which no handler sees. The
@@ -241,6 +242,7 @@ internal sealed class LineProcess : IDisposable
             return;
         }
 
+        line = Values.InputQuote.Line(line, MaxStderrChars); // the child's text: no raw control characters, no endless line (issue 28)
         tail.Enqueue(line);
         while (tail.Count > TailLines && tail.TryDequeue(out _))
         {
