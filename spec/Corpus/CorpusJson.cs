@@ -156,7 +156,9 @@ public static class CorpusJson
                     throw new CorpusFormatException(e.Message, e);
                 }
 
-                return header with { SceneWalk = new SceneWalk(scene, WalkJson.Read(Prop(root, "walk", source), source)) };
+                var sceneWalk = WalkJson.Read(Prop(root, "walk", source), source);
+                Refuse(Values.SceneWalkStart.Problem(scene, sceneWalk.StartCell), source, "$.walk.start.cell");
+                return header with { SceneWalk = new SceneWalk(scene, sceneWalk) };
             }
 
             if (kind == "parts")
