@@ -26,6 +26,8 @@ internal static class SceneSvg
     private const double Line = 14;
     private const int MaxRows = 64;
     private const double CharPixels = 6.7; // one monospace character at font-size 11
+    private const string CellsKey = "cells: filled outline per env cell (dashed: upper storey), label id and z range; steps: circle = indoor, square = outdoor, coloured by containing cell";
+    private const string PortalsKey = "portals: orange = exit, teal = between cells, grey = into an unloaded cell, black dashes = building portal; pN→target ps=PortalSide (1: cell on the plane's negative side)";
     private const double Pad = 4; // metres of margin around the cells, buildings and path
     private const double PortalInset = 3.5; // pixels: a portal is drawn this far inside its own cell, so both sides show
 
@@ -49,7 +51,8 @@ internal static class SceneSvg
         double minY = Math.Floor(all.Min(p => p.Y) - reach - Pad), maxY = Math.Ceiling(all.Max(p => p.Y) + reach + Pad);
         double scale = Math.Clamp(MinPixels / (maxX - minX), 1e-3, Math.Min(MaxScale, MaxPixels / Math.Max(maxX - minX, maxY - minY)));
         var rows = LegendRows(check);
-        double widest = (rows.Select(r => r.Line.Length).DefaultIfEmpty(0).Max() * CharPixels) + 12; // a step row is never cut
+        // A step row and the key lines are never cut (the title may be, it is also the file's <title>).
+        double widest = (rows.Select(r => r.Line.Length).Append(CellsKey.Length).Append(PortalsKey.Length).Max() * CharPixels) + 12;
         double width = Math.Max(Math.Max((maxX - minX) * scale, MinPixels), widest), height = (maxY - minY) * scale;
         maxX = minX + (width / scale);
         // Every legend line counted: the indoor cells, the land cells the walk stands in, the step rows, two headings
@@ -71,8 +74,8 @@ internal static class SceneSvg
         int chars = (int)(width / CharPixels);
         sb.Append($"<text x=\"4\" y=\"{Num(-Header + 14)}\" font-weight=\"bold\">{Escape(Clip(title, chars))}</text>\n");
         sb.Append($"<text x=\"4\" y=\"{Num(-Header + 28)}\" fill=\"{(bad is null ? "#000" : "red")}\">{Escape(Clip(headline, chars))}</text>\n");
-        sb.Append($"<text x=\"4\" y=\"{Num(-Header + 42)}\" fill=\"#555\">{Escape(Clip("cells: filled outline per env cell (dashed: upper storey), label id and z range; steps: circle = indoor, square = outdoor, coloured by containing cell", chars))}</text>\n");
-        sb.Append($"<text x=\"4\" y=\"{Num(-Header + 56)}\" fill=\"#555\">{Escape(Clip("portals: orange = exit, teal = between cells, grey = into an unloaded cell, black dashes = building portal; pN→target ps=PortalSide (1: cell on the plane's negative side)", chars))}</text>\n");
+        sb.Append($"<text x=\"4\" y=\"{Num(-Header + 42)}\" fill=\"#555\">{Escape(Clip(CellsKey, chars))}</text>\n");
+        sb.Append($"<text x=\"4\" y=\"{Num(-Header + 56)}\" fill=\"#555\">{Escape(Clip(PortalsKey, chars))}</text>\n");
 
         sb.Append($"<clipPath id=\"map\"><rect x=\"0\" y=\"0\" width=\"{Num(width)}\" height=\"{Num(height)}\"/></clipPath>\n<g clip-path=\"url(#map)\">\n");
 
