@@ -103,7 +103,7 @@ public sealed class HostileInputTests
         entry["scene"]!["buildings"]![0]!["portals"]![0]!["portal"] = 99;
         var run = Acphys.Run(["replay", HostileFiles.Write("portal.json", entry.ToJsonString())]);
         Assert.True(run.Exit == 2, run.ToString());
-        Assert.Contains("$.scene.buildings[0].portals[0].portal: cell 0xA9B40100 has 2 portals (0..1), not portal 99", run.Err, StringComparison.Ordinal);
+        Assert.Contains("$.scene.buildings[0].portals[0].portal: cell 0xA9B40100 has 2 portals (0..1, or 65535 for none), not portal 99", run.Err, StringComparison.Ordinal);
     }
 
     /// <summary>FUZZ-OPTIONS: NaN and huge minutes, 1000 jobs, --no-build without a build, --triage-only without a campaign, and --triage-only --fresh (own input 10) are exit 2 before anything is installed or built.</summary>
