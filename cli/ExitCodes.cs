@@ -15,6 +15,9 @@ internal static class ExitCodes
     /// <summary>An output path (<c>-o</c>, <c>--junit</c>, <c>--markdown</c>, <c>--json</c>) cannot be written; checked before the work starts.</summary>
     public const int OutputError = 3;
 
+    /// <summary>Nothing was violated but fewer invariants were tested than <c>verify --min-tested</c> (default 1): a run that tested nothing is never a pass.</summary>
+    public const int TooFewTested = 4;
+
     /// <summary>An internal error of the tool (a bug, never bad input): one line on stderr, the stack trace with <c>ACPHYS_DEBUG=1</c> (sysexits EX_SOFTWARE).</summary>
     public const int InternalError = 70;
 

@@ -12,6 +12,22 @@ namespace AcPhys.Cli;
 internal static class Guard
 {
     private static Action? stopReport;
+    private static Action<string>? abort;
+    private static string? abortMessage;
+    private static int returned;
+
+    /// <summary>Gets a value indicating whether the command has finished and the process is ending normally (not through an Environment.Exit elsewhere).</summary>
+    public static bool Returned => Volatile.Read(ref returned) != 0;
+
+    /// <summary>Stops the running command at once with exit 2 and one message (an in-process implementation that hangs, issue 28).</summary>
+    /// <param name="message">What went wrong.</param>
+    /// <returns>Whether a command was running to stop.</returns>
+    public static bool Abort(string message)
+    {
+        var stop = Volatile.Read(ref abort);
+        stop?.Invoke(message);
+        return stop is not null;
+    }
 
     /// <summary>Registers what the running command prints when a signal stops it (its partial results).</summary>
     /// <param name="report">Prints them; runs on the signal's thread while the work may still be going.</param>
@@ -38,6 +54,12 @@ internal static class Guard
 
         using var sigint = PosixSignalRegistration.Create(PosixSignal.SIGINT, c => OnSignal(c, ExitCodes.Interrupted));
         using var sigterm = PosixSignalRegistration.Create(PosixSignal.SIGTERM, c => OnSignal(c, ExitCodes.Terminated));
+        Volatile.Write(ref abort, message =>
+        {
+            Volatile.Write(ref abortMessage, message);
+            Interlocked.CompareExchange(ref signalExit, ExitCodes.ToolError, 0);
+            stopped.Set();
+        });
 
         int exit = ExitCodes.ToolError;
         Exception? error = null;
@@ -64,10 +86,12 @@ internal static class Guard
 
         worker.Start();
         WaitHandle.WaitAny([done.WaitHandle, stopped.WaitHandle]);
+        Volatile.Write(ref abort, null);
+        Volatile.Write(ref returned, 1);
         if (!done.IsSet)
         {
             Terminal.RestoreCursor();
-            Terminal.Error(verb, signalExit == ExitCodes.Terminated ? "terminated" : "interrupted");
+            Terminal.Error(verb, Volatile.Read(ref abortMessage) ?? (signalExit == ExitCodes.Terminated ? "terminated" : "interrupted"));
             try
             {
                 Volatile.Read(ref stopReport)?.Invoke(); // what the command had finished (issue 19: a killed verify printed nothing)

@@ -32,7 +32,23 @@ internal static class OutputPath
             throw new OutputPathException($"cannot write '{path}' ({option}): it is a directory");
         }
 
-        string folder = Path.GetDirectoryName(Path.GetFullPath(path)) ?? ".";
+        string target = AtomicFile.Target(path); // a symlink is written through: check its target
+        if (SpecialFile.KindOf(target) is string kind)
+        {
+            if (kind == "a character device")
+            {
+                return; // written in place (/dev/null); a full device fails at the write, exit 3
+            }
+
+            throw new OutputPathException($"cannot write '{path}' ({option}): it is {kind}; an output is a regular file, a character device such as /dev/null, or - for stdout");
+        }
+
+        if (Directory.Exists(target))
+        {
+            throw new OutputPathException($"cannot write '{path}' ({option}): it links to a directory");
+        }
+
+        string folder = Path.GetDirectoryName(target) ?? ".";
         if (!Directory.Exists(folder))
         {
             throw new OutputPathException($"cannot write '{path}' ({option}): no folder '{folder}'");
@@ -51,6 +67,70 @@ internal static class OutputPath
             throw new OutputPathException($"cannot write '{path}' ({option}): {e.Message}", e);
         }
     }
+
+    /// <summary>Fails at once when <paramref name="path"/> cannot be an output folder: empty, a file, or a folder that cannot be created or written.</summary>
+    /// <param name="option">The option (or variable) that named it, for the message.</param>
+    /// <param name="path">The folder.</param>
+    /// <exception cref="OutputPathException">It cannot be written.</exception>
+    public static void CheckFolder(string option, string path)
+    {
+        if (path.Length == 0)
+        {
+            throw new OutputPathException($"{option}: empty path (give a folder)");
+        }
+
+        if (File.Exists(path) || SpecialFile.KindOf(path) is not null)
+        {
+            throw new OutputPathException($"cannot write into '{path}' ({option}): it is a file, not a folder");
+        }
+
+        string probe = Path.Combine(path, $".acphys.{Environment.ProcessId}.probe");
+        try
+        {
+            Directory.CreateDirectory(path);
+            using (File.Create(probe, 1, FileOptions.DeleteOnClose))
+            {
+            }
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException or NotSupportedException or ArgumentException)
+        {
+            throw new OutputPathException($"cannot write into '{path}' ({option}): {e.Message}", e);
+        }
+    }
+
+    /// <summary>Fails when two outputs name one file, or an output is (or lies inside) an input: a usage error before any work (issue 28).</summary>
+    /// <param name="outputs">The outputs given, with their options (null paths and <c>-</c> are skipped).</param>
+    /// <param name="inputs">The input files and folders.</param>
+    /// <exception cref="OutputPathException">Two paths collide.</exception>
+    public static void CheckDistinct(IEnumerable<(string Option, string? Path)> outputs, IEnumerable<string> inputs)
+    {
+        var given = outputs.Where(o => o.Path is { Length: > 0 } p && p != Stdout).Select(o => (o.Option, o.Path, Full: Same(o.Path!))).ToArray();
+        for (int i = 0; i < given.Length; i++)
+        {
+            for (int j = i + 1; j < given.Length; j++)
+            {
+                if (given[i].Full == given[j].Full)
+                {
+                    throw new OutputPathException($"{given[i].Option} and {given[j].Option} name the same file '{given[i].Path}'; give each output its own path");
+                }
+            }
+        }
+
+        foreach (string input in inputs.Where(p => p.Length > 0))
+        {
+            string full = Same(input);
+            foreach (var o in given)
+            {
+                if (o.Full == full || o.Full.StartsWith(full.TrimEnd(Path.DirectorySeparatorChar) + Path.DirectorySeparatorChar, StringComparison.Ordinal))
+                {
+                    throw new OutputPathException($"{o.Option} '{o.Path}' would overwrite the input '{input}'; write the output elsewhere");
+                }
+            }
+        }
+    }
+
+    // One spelling per file: full path, symlinks of the last component followed.
+    private static string Same(string path) => AtomicFile.Target(path).TrimEnd(Path.DirectorySeparatorChar);
 
     /// <summary>Writes <paramref name="text"/> to <paramref name="path"/> atomically, or to stdout for <c>-</c>.</summary>
     /// <param name="path">The path, or <c>-</c>.</param>

@@ -50,7 +50,13 @@ internal static class Program
                 Console.Error.WriteLine(ParseErrors.Explain(error.Message));
             }
 
-            string command = parse.CommandResult.Command == root ? string.Empty : " " + parse.CommandResult.Command.Name;
+            // The whole command path (issue 28: "tradeoffs accuracy --seed x" pointed to "acphys accuracy --help").
+            string command = string.Empty;
+            for (var c = parse.CommandResult; c is not null && c.Command != root; c = c.Parent as System.CommandLine.Parsing.CommandResult)
+            {
+                command = " " + c.Command.Name + command;
+            }
+
             Console.Error.WriteLine($"Run 'acphys{command} --help' for usage.");
             return ExitCodes.ToolError;
         }

@@ -70,6 +70,7 @@ internal static class BiteCommand
 
         OutputPath.Check("--markdown", markdownPath);
         OutputPath.Check("--json", jsonPath);
+        OutputPath.CheckDistinct([("--markdown", markdownPath), ("--json", jsonPath)], []);
 
         IReadOnlyList<KnownBug> catalogue;
         try

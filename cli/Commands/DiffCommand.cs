@@ -55,7 +55,9 @@ internal static class DiffCommand
                 fixedSeed = Seed.TryParse(s, out var parsed) ? parsed : throw new UsageException($"malformed seed '{s}': expected seed,gamma[,size]");
             }
 
-            return Run(choice, n, parse.GetValue(only), fixedSeed, parse.GetValue(output) ?? Path.Combine("artifacts", "diff"), parse.GetValue(quiet));
+            string folder = parse.GetValue(output) ?? Path.Combine("artifacts", "diff");
+            OutputPath.CheckFolder("-o", folder); // before the implementation starts (issue 28: -o FILE was exit 70 after the run)
+            return Run(choice, n, parse.GetValue(only), fixedSeed, folder, parse.GetValue(quiet));
         }));
         return command;
     }

@@ -13,6 +13,8 @@ namespace AcPhys.Cli.Commands;
 /// </summary>
 internal static class FuzzCommand
 {
+    private const double MaxMinutes = 7 * 24 * 60;
+
     /// <summary>Builds the command.</summary>
     /// <returns>The command.</returns>
     public static Command Create()
@@ -57,9 +59,15 @@ internal static class FuzzCommand
             double m = parse.GetValue(minutes);
             int j = parse.GetValue(jobs);
             int ms = parse.GetValue(timeout);
-            if (m <= 0 || j < 1 || ms < 1)
+            if (!double.IsFinite(m) || m <= 0 || m > MaxMinutes || j < 1 || ms < 1)
             {
-                throw new UsageException("--minutes, --jobs and --timeout-ms must be positive");
+                throw new UsageException($"--minutes (a number of minutes up to {MaxMinutes}), --jobs and --timeout-ms must be positive (got --minutes {Spec.Values.InputQuote.Line(m.ToString(System.Globalization.CultureInfo.InvariantCulture))})");
+            }
+
+            int maxJobs = Math.Max(1, Environment.ProcessorCount);
+            if (j > maxJobs)
+            {
+                throw new UsageException($"--jobs {j}: at most {maxJobs} (one afl-fuzz instance per core of this machine)");
             }
 
             string name = $"{t.Name}-{f ?? "correct"}";
@@ -83,6 +91,19 @@ internal static class FuzzCommand
             if (parse.GetValue(buildDir) is { Length: > 0 } dir)
             {
                 settings = settings with { BuildDir = Path.GetFullPath(dir) };
+            }
+
+            // Checked before afl++ is installed or anything is built (issue 28).
+            if (settings.NoBuild && !File.Exists(settings.Harness))
+            {
+                throw new UsageException($"--no-build: no instrumented build in {settings.BuildDir} (run once without --no-build)");
+            }
+
+            if (settings.TriageOnly && (settings.Fresh || !Directory.Exists(settings.SyncDir)))
+            {
+                throw new UsageException(settings.Fresh
+                    ? "--triage-only and --fresh exclude each other (--fresh wipes the crashes triage would read)"
+                    : $"--triage-only: no campaign to triage in {settings.CampaignDir} (no sync folder)");
             }
 
             return settings;

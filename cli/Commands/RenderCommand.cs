@@ -29,6 +29,7 @@ internal static class RenderCommand
     private static int Run(string path, string output, string? faultId)
     {
         OutputPath.Check("-o", output);
+        OutputPath.CheckDistinct([("-o", output)], [path]);
         if (!CaseFiles.Exists(path))
         {
             throw new UsageException($"{(path.Length == 0 ? "''" : path)}: no such file or record folder");

@@ -28,6 +28,8 @@ internal static class SceneCommand
 
     private static int Export(string path, string dir)
     {
+        OutputPath.CheckFolder("--dat", dir); // every path problem is exit 3 before the work (issue 28)
+        OutputPath.CheckDistinct([("--dat", dir)], [path]);
         if (!File.Exists(path))
         {
             throw new UsageException($"{(path.Length == 0 ? "''" : path)}: no such file");
@@ -75,7 +77,7 @@ internal static class SceneCommand
         }
         catch (Exception e) when (e is IOException or UnauthorizedAccessException)
         {
-            throw new UsageException(e.Message);
+            throw new OutputPathException($"cannot write '{dir}' (--dat): {e.Message}", e);
         }
 
         var counts = export.Records.GroupBy(r => r.Record.Type).Select(g => $"{g.Count()} {g.Key}");
@@ -85,6 +87,8 @@ internal static class SceneCommand
 
     private static int Import(string dir, string output)
     {
+        OutputPath.Check("-o", output);
+        OutputPath.CheckDistinct([("-o", output)], [dir]);
         if (!DatFolder.IsRecordFolder(dir))
         {
             throw new UsageException($"{(dir.Length == 0 ? "''" : dir)}: not a record folder (no {DatFolder.ManifestName})");
@@ -95,7 +99,7 @@ internal static class SceneCommand
         string text = walk
             ? CorpusJson.Write(manifest.Header! with { SceneWalk = new Spec.Cases.SceneWalk(scene, manifest.Walk!) })
             : SceneJson.Write(scene);
-        AtomicFile.WriteAllText(output, text);
+        OutputPath.Write(output, text);
         Terminal.Line($"scene import: wrote {output} ({(walk ? "scene-walk corpus file" : "bare scene")}: {scene})");
         return ExitCodes.Ok;
     }

@@ -77,13 +77,18 @@ internal static class VerifyCommand
             Description = "Failure classes each failing invariant searches for within its budget (default 4; 1 stops each invariant at its first failure: fastest when you only need caught or not).",
             HelpName = "N",
         };
+        var minTested = new Option<int?>("--min-tested")
+        {
+            Description = "The fewest invariants that must be tested (not NOT TESTED) for the run to pass (default 1: a run that tested nothing never passes; exit 4).",
+            HelpName = "N",
+        };
         var sweeps = new Option<bool>("--sweeps") { Description = "Also run the exhaustive sweeps against an --impl-cmd implementation (millions of round trips; off by default there)." };
         var junit = new Option<string>("--junit") { Description = "Also write the results as JUnit XML (one testcase per invariant) to this file.", HelpName = "FILE" };
         var markdown = new Option<string>("--markdown") { Description = "Also write a markdown summary fit for a PR comment to this file.", HelpName = "FILE" };
         var implOptions = new ImplementationOptions();
         var command = new Command("verify", "Run the invariant catalogue against the reference core, a planted fault, or your implementation (--impl, --impl-cmd), and report.")
         {
-            profile, only, except, scope, seed, baseSeed, fault, quiet, classes, pick, fidelity, cases, maxClasses, sweeps, junit, markdown,
+            profile, only, except, scope, seed, baseSeed, fault, quiet, classes, pick, fidelity, cases, maxClasses, sweeps, junit, markdown, minTested,
         };
         foreach (var option in implOptions.All)
         {
@@ -94,6 +99,12 @@ internal static class VerifyCommand
         {
             OutputPath.Check("--junit", parse.GetValue(junit));
             OutputPath.Check("--markdown", parse.GetValue(markdown));
+            OutputPath.CheckDistinct([("--junit", parse.GetValue(junit)), ("--markdown", parse.GetValue(markdown))], parse.GetValue(implOptions.Assembly) is string dll ? [dll] : []);
+            if (Environment.GetEnvironmentVariable("ACPHYS_FAILURES") is { Length: > 0 } failures)
+            {
+                OutputPath.CheckFolder("ACPHYS_FAILURES", failures); // named by the user: a path problem is exit 3 before the run
+            }
+
             var settings = VerifySettings.Parse(
                 parse.GetValue(profile) ?? DefaultProfile(), parse.GetValue(only), parse.GetValue(seed), parse.GetValue(baseSeed), parse.GetValue(fault), parse.GetValue(except), parse.GetValue(scope))
                 with
@@ -109,6 +120,7 @@ internal static class VerifyCommand
                 MaxClasses = parse.GetValue(maxClasses) ?? CatalogueRunner.MaxClasses,
                 JunitPath = parse.GetValue(junit),
                 MarkdownPath = parse.GetValue(markdown),
+                MinTested = parse.GetValue(minTested) ?? 1,
             };
             return Run(WithBudget(settings, parse.GetValue(sweeps)));
         }));
@@ -138,6 +150,11 @@ internal static class VerifyCommand
         if (settings.MaxClasses is < 1 or > CatalogueRunner.MaxClasses)
         {
             throw new UsageException($"--max-classes must be between 1 and {CatalogueRunner.MaxClasses} (got {settings.MaxClasses})");
+        }
+
+        if (settings.MinTested < 1 || settings.MinTested > InvariantCatalogue.All.Count)
+        {
+            throw new UsageException($"--min-tested must be between 1 and {InvariantCatalogue.All.Count} (got {settings.MinTested})");
         }
 
         if (settings.CasesOverride is int n && n is < 1 or > 10_000_000)
@@ -182,6 +199,8 @@ internal static class VerifyCommand
             report.WriteHeader();
         }
 
+        report.WriteUnknownOps();
+
         var stopwatch = Stopwatch.StartNew();
         var finished = new List<InvariantResult>();
         Guard.OnStop(() =>
@@ -215,7 +234,12 @@ internal static class VerifyCommand
         FindingsText.Write(results);
         report.WriteSummary(results, stopwatch.Elapsed);
         report.WriteFiles(results, stopwatch.Elapsed);
-        return results.Any(r => r.Status == ResultStatus.Failed) ? ExitCodes.Violated : ExitCodes.Ok;
+        if (results.Any(r => r.Status == ResultStatus.Failed))
+        {
+            return ExitCodes.Violated;
+        }
+
+        return report.WriteTooFewTested(results) ? ExitCodes.TooFewTested : ExitCodes.Ok;
     }
 
     private static int Total(VerifySettings settings) => settings.Only.Count == 0 ? InvariantCatalogue.All.Count : settings.Only.Count;

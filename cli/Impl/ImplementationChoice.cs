@@ -37,8 +37,8 @@ internal sealed record ImplementationChoice(string? Command, string? AssemblyPat
 
         if (AssemblyPath is not null)
         {
-            var impl = AdapterLoader.Load(AssemblyPath);
-            return (impl, impl as IDisposable);
+            var impl = WatchedAdapter.Load(AssemblyPath, Timeout); // the same --timeout as a child (issue 28)
+            return (impl, impl);
         }
 
         throw new InvalidOperationException("no external implementation chosen");
@@ -52,15 +52,16 @@ internal sealed record ImplementationChoice(string? Command, string? AssemblyPat
         if (Command is not null)
         {
             words.AddRange(["--impl-cmd", Command]);
-            if (Timeout != ProcessAdapterOptions.DefaultTimeout)
-            {
-                words.AddRange(["--timeout", Timeout.TotalSeconds.ToString("0.###", CultureInfo.InvariantCulture)]);
-            }
         }
 
         if (AssemblyPath is not null)
         {
             words.AddRange(["--impl", AssemblyPath]);
+        }
+
+        if (IsExternal && Timeout != ProcessAdapterOptions.DefaultTimeout)
+        {
+            words.AddRange(["--timeout", Timeout.TotalSeconds.ToString("0.###", CultureInfo.InvariantCulture)]);
         }
 
         return words;

@@ -7,6 +7,9 @@ namespace AcPhys.Cli.Impl;
 /// <summary>The options that choose an implementation under test, shared by <c>verify</c>, <c>diff</c> and <c>replay</c>.</summary>
 internal sealed class ImplementationOptions
 {
+    /// <summary>The shortest <c>--timeout</c>: below it no answer could arrive (issue 28: 1e-9 was accepted, "within 0 s").</summary>
+    public const double MinTimeoutSeconds = 0.1;
+
     /// <summary>Gets <c>--impl-cmd</c>.</summary>
     public Option<string> Command { get; } = new("--impl-cmd")
     {
@@ -24,7 +27,7 @@ internal sealed class ImplementationOptions
     /// <summary>Gets <c>--timeout</c>.</summary>
     public Option<string> Timeout { get; } = new("--timeout")
     {
-        Description = $"Seconds to wait for each answer of an --impl-cmd implementation (default {ProcessAdapterOptions.DefaultTimeout.TotalSeconds}); a hang past it is exit 2.",
+        Description = $"Seconds to wait for each answer of an --impl-cmd or --impl implementation (default {ProcessAdapterOptions.DefaultTimeout.TotalSeconds}, at least {MinTimeoutSeconds}); a hang past it is exit 2.",
         HelpName = "SECONDS",
     };
 
@@ -58,14 +61,14 @@ internal sealed class ImplementationOptions
         var timeout = ProcessAdapterOptions.DefaultTimeout;
         if (timeoutText is not null)
         {
-            if (!double.TryParse(timeoutText, NumberStyles.Float, CultureInfo.InvariantCulture, out double seconds) || !(seconds > 0 && seconds <= 3600))
+            if (!double.TryParse(timeoutText, NumberStyles.Float, CultureInfo.InvariantCulture, out double seconds) || !(seconds >= MinTimeoutSeconds && seconds <= 3600))
             {
-                throw new UsageException($"malformed --timeout '{timeoutText}': expected seconds, a number in (0, 3600]");
+                throw new UsageException($"malformed --timeout '{Spec.Values.InputQuote.Line(timeoutText)}': expected seconds, a number from {MinTimeoutSeconds} to 3600");
             }
 
-            if (command is null)
+            if (command is null && assembly is null)
             {
-                throw new UsageException("--timeout applies to --impl-cmd only");
+                throw new UsageException("--timeout applies to --impl-cmd and --impl only");
             }
 
             timeout = TimeSpan.FromSeconds(seconds);

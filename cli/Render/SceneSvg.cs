@@ -24,7 +24,10 @@ internal static class SceneSvg
     private const double MinPixels = 720;
     private const double Header = 70;
     private const double Line = 14;
-    private const int MaxRows = 28;
+    private const int MaxRows = 64;
+    private const double CharPixels = 6.7; // one monospace character at font-size 11
+    private const string CellsKey = "cells: filled outline per env cell (dashed: upper storey), label id and z range; steps: circle = indoor, square = outdoor, coloured by containing cell";
+    private const string PortalsKey = "portals: orange = exit, teal = between cells, grey = into an unloaded cell, black dashes = building portal; pN→target ps=PortalSide (1: cell on the plane's negative side)";
     private const double Pad = 4; // metres of margin around the cells, buildings and path
     private const double PortalInset = 3.5; // pixels: a portal is drawn this far inside its own cell, so both sides show
 
@@ -47,10 +50,15 @@ internal static class SceneSvg
         double minX = Math.Floor(all.Min(p => p.X) - reach - Pad), maxX = Math.Ceiling(all.Max(p => p.X) + reach + Pad);
         double minY = Math.Floor(all.Min(p => p.Y) - reach - Pad), maxY = Math.Ceiling(all.Max(p => p.Y) + reach + Pad);
         double scale = Math.Clamp(MinPixels / (maxX - minX), 1e-3, Math.Min(MaxScale, MaxPixels / Math.Max(maxX - minX, maxY - minY)));
-        double width = Math.Max((maxX - minX) * scale, MinPixels), height = (maxY - minY) * scale;
-        maxX = minX + (width / scale);
         var rows = LegendRows(check);
-        double legend = ((cells.Count + rows.Count + 4) * Line) + 10;
+        // A step row and the key lines are never cut (the title may be, it is also the file's <title>).
+        double widest = (rows.Select(r => r.Line.Length).Append(CellsKey.Length).Append(PortalsKey.Length).Max() * CharPixels) + 12;
+        double width = Math.Max(Math.Max((maxX - minX) * scale, MinPixels), widest), height = (maxY - minY) * scale;
+        maxX = minX + (width / scale);
+        // Every legend line counted: the indoor cells, the land cells the walk stands in, the step rows, two headings
+        // and the gaps (issue 28: the land cells were left out, so the last step rows fell off the picture).
+        int landCells = check.Trace.Select(s => s.Containing).Where(c => c.IsLand).Distinct().Count();
+        double legend = ((cells.Count + landCells + rows.Count + 4) * Line) + 10;
         double Px(double x) => (x - minX) * scale;
         double Py(double y) => (maxY - y) * scale;
         string P(WorldPoint p) => $"{Num(Px(p.X))},{Num(Py(p.Y))}";
@@ -63,11 +71,11 @@ internal static class SceneSvg
         sb.Append($"<title>{Escape(title)}</title>\n<rect x=\"0\" y=\"{Num(-Header)}\" width=\"{Num(width)}\" height=\"{Num(Header + height + legend)}\" fill=\"white\"/>\n");
         string headline = $"{sw.Size}; "
             + (bad is int b1 ? $"first violation at step {b1}: {string.Join(", ", check.PerStep[b1].Select(v => v.InvariantId).Distinct())}" : "no violation");
-        int chars = (int)(width / 6.7);
+        int chars = (int)(width / CharPixels);
         sb.Append($"<text x=\"4\" y=\"{Num(-Header + 14)}\" font-weight=\"bold\">{Escape(Clip(title, chars))}</text>\n");
         sb.Append($"<text x=\"4\" y=\"{Num(-Header + 28)}\" fill=\"{(bad is null ? "#000" : "red")}\">{Escape(Clip(headline, chars))}</text>\n");
-        sb.Append($"<text x=\"4\" y=\"{Num(-Header + 42)}\" fill=\"#555\">{Escape(Clip("cells: filled outline per env cell (dashed: upper storey), label id and z range; steps: circle = indoor, square = outdoor, coloured by containing cell", chars))}</text>\n");
-        sb.Append($"<text x=\"4\" y=\"{Num(-Header + 56)}\" fill=\"#555\">{Escape(Clip("portals: orange = exit, teal = between cells, grey = into an unloaded cell, black dashes = building portal; pN→target ps=PortalSide (1: cell on the plane's negative side)", chars))}</text>\n");
+        sb.Append($"<text x=\"4\" y=\"{Num(-Header + 42)}\" fill=\"#555\">{Escape(Clip(CellsKey, chars))}</text>\n");
+        sb.Append($"<text x=\"4\" y=\"{Num(-Header + 56)}\" fill=\"#555\">{Escape(Clip(PortalsKey, chars))}</text>\n");
 
         sb.Append($"<clipPath id=\"map\"><rect x=\"0\" y=\"0\" width=\"{Num(width)}\" height=\"{Num(height)}\"/></clipPath>\n<g clip-path=\"url(#map)\">\n");
 
@@ -290,7 +298,7 @@ internal static class SceneSvg
 
             if (rows.Count == MaxRows)
             {
-                rows.Add(("…", false));
+                rows.Add(($"… {check.Trace.Count - step.Index} more steps not listed (acphys replay prints every step)", false));
                 break;
             }
 

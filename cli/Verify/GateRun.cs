@@ -27,6 +27,23 @@ internal sealed record GateRun(string ImplName, VerifySettings Settings, IReadOn
     /// <summary>Gets the number of invariants not tested.</summary>
     public int NotTested => Results.Count(r => r.Status == ResultStatus.NotTested);
 
+    /// <summary>Gets the op names the implementation announced that protocol v1 does not know (its own text, unescaped).</summary>
+    public IReadOnlyList<string> UnknownOps { get; init; } = [];
+
+    /// <summary>Gets the number of invariants tested (passed or failed).</summary>
+    public int Tested => Passed + Failed;
+
+    /// <summary>Gets a value indicating whether nothing failed but fewer invariants were tested than <c>--min-tested</c>: not a pass.</summary>
+    public bool TooFewTested => Failed == 0 && Tested < Settings.MinTested;
+
+    /// <summary>Gets the line that says a run tested too little, and why.</summary>
+    public string TooFewTestedText =>
+        $"not a pass: {Tested} of {Results.Count} invariants tested, fewer than --min-tested {Settings.MinTested}"
+        + (UnknownOps.Count > 0 ? $" (the implementation announced unknown ops: {UnknownOpsText})" : string.Empty);
+
+    /// <summary>Gets the unknown op names, escaped and quoted.</summary>
+    public string UnknownOpsText => string.Join(", ", UnknownOps.Take(20).Select(o => "\"" + Spec.Values.InputQuote.Line(o, 64) + "\"")) + (UnknownOps.Count > 20 ? $" and {UnknownOps.Count - 20} more" : string.Empty);
+
     /// <summary>Gets the seed text of the run: the fixed seed, or the base seed.</summary>
     public string SeedText => Settings.FixedSeed is Seed s ? "seed " + s : "base seed " + Fmt.Decimal(Settings.BaseSeed);
 }

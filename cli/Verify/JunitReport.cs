@@ -22,7 +22,7 @@ internal static class JunitReport
         using var buffer = new MemoryStream();
         using (var xml = XmlWriter.Create(buffer, settings))
         {
-            string suite = "acphys verify: " + run.ImplName;
+            string suite = X("acphys verify: " + run.ImplName);
             xml.WriteStartDocument();
             xml.WriteStartElement("testsuites");
             xml.WriteAttributeString("name", suite);
@@ -37,6 +37,11 @@ internal static class JunitReport
             Property(xml, "profile", run.Settings.Profile.Name);
             Property(xml, "cases-per-invariant", run.Settings.Profile.CasesPerInvariant.ToString(CultureInfo.InvariantCulture));
             Property(xml, "seed", run.SeedText);
+            if (run.UnknownOps.Count > 0)
+            {
+                Property(xml, "unknown-ops", "warning: the implementation announced ops protocol v1 does not know (ignored): " + run.UnknownOpsText);
+            }
+
             xml.WriteEndElement();
 
             var findings = Findings.Of(run.Results);
@@ -50,14 +55,14 @@ internal static class JunitReport
                 {
                     case ResultStatus.Failed:
                         xml.WriteStartElement("failure");
-                        xml.WriteAttributeString("message", $"{r.Invariant.Id}: {r.Violation?.Message ?? "violated"}");
+                        xml.WriteAttributeString("message", X($"{r.Invariant.Id}: {r.Violation?.Message ?? "violated"}"));
                         xml.WriteAttributeString("type", "InvariantViolated");
-                        xml.WriteString(FailureText(r, run.Failures.GetValueOrDefault(r.Invariant.Id)) + FindingsOf(r.Invariant.Id, findings));
+                        xml.WriteString(X(FailureText(r, run.Failures.GetValueOrDefault(r.Invariant.Id)) + FindingsOf(r.Invariant.Id, findings)));
                         xml.WriteEndElement();
                         break;
                     case ResultStatus.NotTested:
                         xml.WriteStartElement("skipped");
-                        xml.WriteAttributeString("message", "not tested: " + (r.NotTestedReason ?? "the implementation lacks an operation it needs"));
+                        xml.WriteAttributeString("message", X("not tested: " + (r.NotTestedReason ?? "the implementation lacks an operation it needs")));
                         xml.WriteEndElement();
                         break;
                 }
@@ -68,10 +73,25 @@ internal static class JunitReport
                 xml.WriteEndElement();
             }
 
+            if (run.TooFewTested)
+            {
+                // A run that tested (almost) nothing is a failure of the gate itself, so a JUnit consumer turns red too.
+                xml.WriteStartElement("testcase");
+                xml.WriteAttributeString("name", "MIN-TESTED");
+                xml.WriteAttributeString("classname", "acphys.gate");
+                xml.WriteAttributeString("time", Seconds(TimeSpan.Zero));
+                xml.WriteStartElement("failure");
+                xml.WriteAttributeString("message", X(run.TooFewTestedText));
+                xml.WriteAttributeString("type", "TooFewTested");
+                xml.WriteString(X(run.TooFewTestedText + "\n"));
+                xml.WriteEndElement();
+                xml.WriteEndElement();
+            }
+
             if (findings.Count > 0)
             {
                 xml.WriteStartElement("system-out");
-                xml.WriteString(FindingsText.Plain(findings));
+                xml.WriteString(X(FindingsText.Plain(findings)));
                 xml.WriteEndElement();
             }
 
@@ -129,18 +149,22 @@ internal static class JunitReport
 
     private static void Counts(XmlWriter xml, GateRun run)
     {
-        xml.WriteAttributeString("tests", run.Results.Count.ToString(CultureInfo.InvariantCulture));
-        xml.WriteAttributeString("failures", run.Failed.ToString(CultureInfo.InvariantCulture));
+        int gate = run.TooFewTested ? 1 : 0;
+        xml.WriteAttributeString("tests", (run.Results.Count + gate).ToString(CultureInfo.InvariantCulture));
+        xml.WriteAttributeString("failures", (run.Failed + gate).ToString(CultureInfo.InvariantCulture));
         xml.WriteAttributeString("errors", "0");
         xml.WriteAttributeString("skipped", run.NotTested.ToString(CultureInfo.InvariantCulture));
         xml.WriteAttributeString("time", Seconds(run.Elapsed));
     }
 
+    // Every text of a report passes here: an implementation's control characters never reach (or break) the XML (issue 28).
+    private static string X(string text) => Spec.Values.InputQuote.Escape(text, keepLines: true);
+
     private static void Property(XmlWriter xml, string name, string value)
     {
         xml.WriteStartElement("property");
         xml.WriteAttributeString("name", name);
-        xml.WriteAttributeString("value", value);
+        xml.WriteAttributeString("value", X(value));
         xml.WriteEndElement();
     }
 

@@ -15,12 +15,18 @@ internal static class MarkdownSummary
     public static string Render(GateRun run)
     {
         var md = new StringBuilder();
-        string verdict = run.Failed > 0 ? $"❌ {run.Failed} invariant{(run.Failed == 1 ? string.Empty : "s")} violated" : "✅ every tested invariant held";
+        string verdict = run.Failed > 0 ? $"❌ {run.Failed} invariant{(run.Failed == 1 ? string.Empty : "s")} violated"
+            : run.TooFewTested ? $"❌ {Inline(run.TooFewTestedText)}" : "✅ every tested invariant held";
         md.Append("## acphys verify: ").Append(verdict).Append("\n\n");
         md.Append($"Implementation **{Cell(run.ImplName)}**, profile `{run.Settings.Profile.Name}` ");
         md.Append($"({Fmt.Count(run.Settings.Profile.CasesPerInvariant)} generated cases per invariant{(run.Settings.Profile.Exhaustive ? " + exhaustive sweeps" : string.Empty)}), ");
         md.Append($"{run.SeedText}, {Fmt.Seconds(run.Elapsed)}: ");
         md.Append($"{run.Passed} passed, {run.Failed} failed, {run.NotTested} not tested.\n\n");
+        if (run.UnknownOps.Count > 0)
+        {
+            md.Append($"> ⚠️ The implementation announced ops protocol v1 does not know (ignored): {Inline(run.UnknownOpsText)}\n\n");
+        }
+
 
         md.Append("| Invariant | Scope | Verdict | Cases | Applicable | Time |\n|---|---|---|---:|---:|---:|\n");
         foreach (var r in run.Results)
@@ -75,7 +81,7 @@ internal static class MarkdownSummary
             md.Append("\n</details>\n");
         }
 
-        return md.ToString();
+        return Spec.Values.InputQuote.Escape(md.ToString(), keepLines: true); // no control character of an implementation reaches the PR comment
     }
 
     private static string Verdict(ResultStatus status) => status switch

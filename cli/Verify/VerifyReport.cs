@@ -12,6 +12,7 @@ namespace AcPhys.Cli.Verify;
 /// <param name="impl">The implementation under test.</param>
 internal sealed class VerifyReport(VerifySettings settings, ICellPhysics impl)
 {
+    private const int MaxFieldChars = 2000;
     private readonly Dictionary<string, FailureDetail> details = [];
 
     /// <summary>Returns the verdict word of a status.</summary>
@@ -171,7 +172,7 @@ internal sealed class VerifyReport(VerifySettings settings, ICellPhysics impl)
             Field("seed", r.Seed.ToString());
             Field("replay", line);
             string? caseFile = null, caseReplay = null;
-            if (r.Violation is { } shrunk && FailureFile.Write(shrunk, FailureFolder, FinderNames.Verify, r.Seed.ToString()) is string file)
+            if (r.Violation is { } shrunk && WriteCaseFile(shrunk, r.Seed) is string file)
             {
                 caseFile = file;
                 caseReplay = string.Join(' ', new[] { ReplayLine.Program, "replay", file }.Concat(settings.Fault is null ? [] : ["--fault", settings.Fault.Id]).Concat(settings.Implementation.Words()).Select(ReplayLine.Quote));
@@ -186,6 +187,33 @@ internal sealed class VerifyReport(VerifySettings settings, ICellPhysics impl)
             }
         }
     }
+
+    /// <summary>Warns (on stderr, also with --quiet) about op names in hello that protocol v1 does not know: a misspelt op is otherwise silently NOT TESTED.</summary>
+    public void WriteUnknownOps()
+    {
+        var unknown = UnknownOps;
+        if (unknown.Count > 0)
+        {
+            var run = new GateRun(impl.Name, settings, [], details, TimeSpan.Zero) { UnknownOps = unknown };
+            Terminal.Error("verify", $"warning: the implementation announced ops protocol v1 does not know: {run.UnknownOpsText} (ignored; known: {string.Join(", ", OpNames.Names(Op.Every))})");
+        }
+    }
+
+    /// <summary>Says so when nothing failed but fewer invariants were tested than <c>--min-tested</c>.</summary>
+    /// <param name="results">The results.</param>
+    /// <returns>Whether the run tested too little to pass.</returns>
+    public bool WriteTooFewTested(IReadOnlyList<InvariantResult> results)
+    {
+        var run = new GateRun(impl.Name, settings, results, details, TimeSpan.Zero) { UnknownOps = UnknownOps };
+        if (run.TooFewTested)
+        {
+            Terminal.Error("verify", run.TooFewTestedText);
+        }
+
+        return run.TooFewTested;
+    }
+
+    private IReadOnlyList<string> UnknownOps => impl is Spec.Protocol.ProcessAdapter process ? process.UnknownOps : [];
 
     /// <summary>Writes the last line: counts, profile, time.</summary>
     /// <param name="results">The results.</param>
@@ -246,7 +274,7 @@ internal sealed class VerifyReport(VerifySettings settings, ICellPhysics impl)
     /// <param name="elapsed">Wall time of the run.</param>
     public void WriteFiles(IReadOnlyList<InvariantResult> results, TimeSpan elapsed)
     {
-        var run = new GateRun(impl.Name, settings, results, details, elapsed);
+        var run = new GateRun(impl.Name, settings, results, details, elapsed) { UnknownOps = UnknownOps };
         if (settings.JunitPath is string junit)
         {
             WriteFile(junit, JunitReport.Render(run));
@@ -267,6 +295,20 @@ internal sealed class VerifyReport(VerifySettings settings, ICellPhysics impl)
             step.Containing.IsNone ? "none" : step.Containing.ToString(),
             "[" + string.Join(", ", step.Cells) + "]",
         }).ToArray();
+
+    // A folder that cannot take the case file (a read-only checkout) loses the file, not the verdict or the reports.
+    private static string? WriteCaseFile(Spec.Invariants.Violation shrunk, Seed seed)
+    {
+        try
+        {
+            return FailureFile.Write(shrunk, FailureFolder, FinderNames.Verify, seed.ToString());
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+        {
+            Field("case file", "not written: " + e.Message);
+            return null;
+        }
+    }
 
     private static void WriteFile(string path, string text)
     {
@@ -289,7 +331,10 @@ internal sealed class VerifyReport(VerifySettings settings, ICellPhysics impl)
     /// <summary>Gets the folder shrunk failing cases are written to: <c>ACPHYS_FAILURES</c>, else artifacts/failures.</summary>
     public static string FailureFolder => Environment.GetEnvironmentVariable("ACPHYS_FAILURES") is { Length: > 0 } f ? f : Path.Combine("artifacts", "failures");
 
-    private static void Field(string name, string value) => Terminal.Line($"  {name,-10} {value}");
+    // An implementation's text is escaped where it enters (the protocol, the --impl wrapper); the console line is also cut
+    // (the failure file keeps the whole text).
+    private static void Field(string name, string value) =>
+        Terminal.Line($"  {name,-10} {Spec.Values.InputQuote.Brief(Spec.Values.InputQuote.Escape(value, keepLines: true), MaxFieldChars)}");
 
     private string WholeRunReplay()
     {

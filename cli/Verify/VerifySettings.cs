@@ -56,6 +56,9 @@ internal sealed record VerifySettings
     /// <summary>Gets the markdown summary file to write (<c>--markdown</c>), if any.</summary>
     public string? MarkdownPath { get; init; }
 
+    /// <summary>Gets the fewest invariants that must be tested for the run to pass (<c>--min-tested</c>, default 1).</summary>
+    public int MinTested { get; init; } = 1;
+
     /// <summary>Gets a value indicating whether only failures and the summary are printed.</summary>
     public bool Quiet { get; init; }
 

@@ -6,7 +6,9 @@ namespace ExampleAdapter;
 /// <summary>
 /// An example of gating your own code in process: a from-scratch port of the LandDefs functions (facts §1–§2),
 /// announced as <see cref="Op.LandDefs"/> only, so the LandDefs invariants are tested and the rest is reported as not
-/// tested. Set <c>ACPHYS_EXAMPLE_BUG=inbound-x-only</c> to switch on ACE's historical bug (facts §7 #15).
+/// tested. Set <c>ACPHYS_EXAMPLE_BUG=inbound-x-only</c> to switch on ACE's historical bug (facts §7 #15); the e2e
+/// tests of a hostile adapter use <c>hang</c> (lcoord_to_gid never returns), <c>exit</c> (it calls Environment.Exit(3))
+/// and <c>name</c> (a name holding a newline and terminal codes).
 /// </summary>
 public sealed class MyLandDefsAdapter : ICellPhysics
 {
@@ -16,9 +18,10 @@ public sealed class MyLandDefsAdapter : ICellPhysics
     private const float Epsilon = 0.0002f;
 
     private readonly bool inboundXOnly = Environment.GetEnvironmentVariable("ACPHYS_EXAMPLE_BUG") == "inbound-x-only";
+    private readonly string? hostile = Environment.GetEnvironmentVariable("ACPHYS_EXAMPLE_BUG") is "hang" or "exit" or "name" ? Environment.GetEnvironmentVariable("ACPHYS_EXAMPLE_BUG") : null;
 
     /// <inheritdoc/>
-    public string Name => inboundXOnly ? "example-dotnet+inbound-x-only" : "example-dotnet";
+    public string Name => hostile == "name" ? "example\u001b[2J\nverify: 42 invariants, 42 passed, 0 failed" : inboundXOnly ? "example-dotnet+inbound-x-only" : "example-dotnet";
 
     /// <inheritdoc/>
     public Op Ops => Op.LandDefs;
@@ -56,10 +59,21 @@ public sealed class MyLandDefsAdapter : ICellPhysics
     }
 
     /// <inheritdoc/>
-    public CellId LcoordToGid(int x, int y) =>
-        x < 0 || y < 0 || x >= LandLength || y >= LandLength
+    public CellId LcoordToGid(int x, int y)
+    {
+        if (hostile == "hang")
+        {
+            Thread.Sleep(Timeout.Infinite);
+        }
+        else if (hostile == "exit")
+        {
+            Environment.Exit(3);
+        }
+
+        return x < 0 || y < 0 || x >= LandLength || y >= LandLength
             ? new CellId(0)
             : new CellId(((uint)(x >> 3) << 24) | ((uint)(y >> 3) << 16) | (uint)(1 + ((x & 7) << 3) + (y & 7)));
+    }
 
     /// <inheritdoc/>
     public bool InboundValidCellId(CellId id)

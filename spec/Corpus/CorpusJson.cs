@@ -143,6 +143,7 @@ public static class CorpusJson
             if (root.TryGetProperty("catches", out var c))
             {
                 Require(c.ValueKind == JsonValueKind.Array, source, "$.catches", "expected an array of fault ids");
+                Refuse(Values.CatchList.Problem(c.GetArrayLength()), source, "$.catches");
                 int i = 0;
                 foreach (var item in c.EnumerateArray())
                 {
@@ -167,7 +168,9 @@ public static class CorpusJson
 
                 string? route = OptStr(root, "route", source);
                 Require(route is null or EnterAndBack, source, "$.route", $"expected \"{EnterAndBack}\" (the only route a stored scene walk names)");
-                return header with { SceneWalk = new SceneWalk(scene, WalkJson.Read(Prop(root, "walk", source), source)) { Route = route is null ? null : SceneRoute.EnterAndBack } };
+                var sceneWalk = WalkJson.Read(Prop(root, "walk", source), source);
+                Refuse(Values.SceneWalkStart.Problem(scene, sceneWalk.StartCell), source, "$.walk.start.cell");
+                return header with { SceneWalk = new SceneWalk(scene, sceneWalk) { Route = route is null ? null : SceneRoute.EnterAndBack } };
             }
 
             if (kind == "query")

@@ -14,7 +14,7 @@ namespace AcPhys.Spec.Corpus;
 public static class PartsJson
 {
     /// <summary>Largest number of parts a file may hold (bounded input).</summary>
-    public const int MaxParts = 256;
+    public const int MaxParts = Values.PartBounds.MaxParts;
 
     /// <summary>Writes the query as the property <c>parts</c>.</summary>
     /// <param name="w">The writer, inside the entry object.</param>
@@ -72,7 +72,13 @@ public static class PartsJson
             CorpusJson.Refuse(Values.SphereRadius.Problem(radius), source, at + ".radius");
             var flag = CorpusJson.Prop(p, "always2d", source, at);
             CorpusJson.Require(flag.ValueKind is JsonValueKind.True or JsonValueKind.False, source, at + ".always2d", "expected true or false");
-            parts.Add(new Part(cell, new Frame(origin, rotation), new Box(min, max), radius, flag.GetBoolean()));
+            var part = new Part(cell, new Frame(origin, rotation), new Box(min, max), radius, flag.GetBoolean());
+            if (Values.PartBounds.Problem(part, parts.Count == 0 ? part : parts[0]) is var (field, problem))
+            {
+                CorpusJson.Refuse(problem, source, at + "." + field);
+            }
+
+            parts.Add(part);
             i++;
         }
 

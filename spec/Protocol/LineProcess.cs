@@ -16,6 +16,7 @@ internal sealed class LineProcess : IDisposable
 {
     private const int TailLines = 20;
     private const int SigKill = 9;
+    private const int MaxStderrChars = 1000;
 
     // On Linux and macOS the implementation runs as the leader of its own process group (setsid), with a watcher in
     // that group that ends the group once acphys is gone: SIGKILL of acphys included, which no handler sees. The
@@ -25,6 +26,7 @@ internal sealed class LineProcess : IDisposable
         "p=$PPID; ( trap '' INT TERM HUP; while kill -0 \"$p\" 2>/dev/null; do sleep 1; done; kill -TERM 0; sleep 1; kill -KILL 0 ) </dev/null >/dev/null 2>&1 & exec /bin/sh -c \"$1\"";
 
     private static readonly ConcurrentDictionary<int, byte> LiveGroups = new();
+    private static readonly ConcurrentDictionary<string, byte> LiveTags = new();
 
     private readonly Process process;
     private readonly string commandLine;
@@ -35,6 +37,8 @@ internal sealed class LineProcess : IDisposable
     private Task<string?>? pending;
     private bool dead;
     private int group;
+    private string tag = string.Empty;
+    private string? stdoutPipe;
 
     private LineProcess(Process process, string commandLine, Action<string>? stderrSink)
     {
@@ -67,6 +71,8 @@ internal sealed class LineProcess : IDisposable
         info.StandardInputEncoding = new UTF8Encoding(false);
         info.StandardOutputEncoding = new UTF8Encoding(false);
         info.StandardErrorEncoding = new UTF8Encoding(false);
+        string tag = ImplProcesses.NewTag();
+        info.Environment[ImplProcesses.Variable] = tag; // inherited by all it starts, a setsid grandchild too
 
         var process = new Process { StartInfo = info };
         var child = new LineProcess(process, commandLine, stderrSink);
@@ -81,6 +87,8 @@ internal sealed class LineProcess : IDisposable
             throw new AdapterFailureException($"could not start '{commandLine}': {e.Message}", e);
         }
 
+        child.tag = tag;
+        LiveTags[tag] = 0;
         if (grouped)
         {
             child.group = process.Id;
@@ -91,6 +99,11 @@ internal sealed class LineProcess : IDisposable
         process.BeginErrorReadLine();
         process.StandardInput.AutoFlush = true;
         child.answers = new BoundedLineReader(process.StandardOutput.BaseStream, maxLineBytes);
+        if (process.StandardOutput.BaseStream is System.IO.Pipes.PipeStream pipe)
+        {
+            child.stdoutPipe = ImplProcesses.NameOf(pipe.SafePipeHandle.DangerousGetHandle().ToInt32());
+        }
+
         return child;
     }
 
@@ -137,6 +150,14 @@ internal sealed class LineProcess : IDisposable
         if (!answered)
         {
             dead = true;
+            if (stdoutPipe is not null && ImplProcesses.ClosedStdout(tag, stdoutPipe, commandLine))
+            {
+                // Alive, but nothing of it can answer any more (issue 28: this was reported as a slow answer).
+                Kill();
+                throw new AdapterFailureException(
+                    string.Create(CultureInfo.InvariantCulture, $"'{commandLine}' closed its stdout but is still running, so it cannot answer '{what}'; it was killed after {timeout.TotalSeconds:0.###} s (--timeout){TailText()}"));
+            }
+
             Kill();
             throw new AdapterFailureException(
                 string.Create(CultureInfo.InvariantCulture, $"'{commandLine}' did not answer '{what}' within {timeout.TotalSeconds:0.###} s (--timeout); it was killed. Request: {Wire.Brief(request, 200)}{TailText()}"));
@@ -180,6 +201,14 @@ internal sealed class LineProcess : IDisposable
                 _ = NativeKill(-pgid, SigKill);
             }
         }
+
+        foreach (string tag in LiveTags.Keys)
+        {
+            if (LiveTags.TryRemove(tag, out _))
+            {
+                ImplProcesses.KillTagged(tag);
+            }
+        }
     }
 
     private static void EnsureExitHook()
@@ -199,6 +228,11 @@ internal sealed class LineProcess : IDisposable
         if (group != 0 && LiveGroups.TryRemove(group, out _))
         {
             _ = NativeKill(-group, SigKill); // the implementation, anything it started, and the watcher
+        }
+
+        if (LiveTags.TryRemove(tag, out _))
+        {
+            ImplProcesses.KillTagged(tag); // what left the group (setsid) but still carries the run's tag
         }
     }
 
@@ -241,6 +275,7 @@ internal sealed class LineProcess : IDisposable
             return;
         }
 
+        line = Values.InputQuote.Line(line, MaxStderrChars); // the child's text: no raw control characters, no endless line (issue 28)
         tail.Enqueue(line);
         while (tail.Count > TailLines && tail.TryDequeue(out _))
         {

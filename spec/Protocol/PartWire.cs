@@ -50,7 +50,21 @@ public static class PartWire
             throw new WireException($"field \"{name}\" must be an array of parts");
         }
 
-        return array.EnumerateArray().Select(ReadPart).ToArray();
+        if (Values.PartBounds.CountProblem(array.GetArrayLength()) is string count)
+        {
+            throw new WireException($"field \"{name}\": {count}");
+        }
+
+        var parts = array.EnumerateArray().Select(ReadPart).ToArray();
+        for (int i = 0; i < parts.Length; i++)
+        {
+            if (Values.PartBounds.Problem(parts[i], parts[0]) is var (field, problem))
+            {
+                throw new WireException($"field \"{name}[{i}].{(field == "radius" ? "r" : field)}\": {problem}"); // bounded work (issue 28)
+            }
+        }
+
+        return parts;
     }
 
     private static Part ReadPart(JsonElement p)

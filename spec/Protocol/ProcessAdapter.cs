@@ -88,7 +88,8 @@ public sealed class ProcessAdapter : ICellPhysics, IDisposable
                     throw new AdapterFailureException($"'{commandLine}' speaks protocol {protocol}; this tool speaks {Wire.Version}");
                 }
 
-                string name = hello.TryGetProperty("name", out _) ? Wire.ReadString(hello, "name") : commandLine;
+                // The name is the implementation's text: escaped and cut once here, so every report quotes it safely (issue 28).
+                string name = Values.InputQuote.Line(hello.TryGetProperty("name", out _) ? Wire.ReadString(hello, "name") : commandLine, 120);
                 var opsField = Wire.Field(hello, "ops");
                 if (opsField.ValueKind != JsonValueKind.Array || opsField.EnumerateArray().Any(e => e.ValueKind != JsonValueKind.String))
                 {
@@ -342,6 +343,10 @@ public sealed class ProcessAdapter : ICellPhysics, IDisposable
     /// <inheritdoc/>
     public void Dispose() => child.Dispose();
 
+    // The whole error text, escaped as JSON escapes it: the failure file keeps all of it, the console line cuts it.
+    private static string ErrorText(JsonElement error) =>
+        Values.InputQuote.TryText(error) is { } text ? "\"" + Values.InputQuote.Escape(text) + "\"" : Wire.Show(error);
+
     private static JsonDocument ParseAnswer(string answer, string op, string who)
     {
         try
@@ -382,7 +387,7 @@ public sealed class ProcessAdapter : ICellPhysics, IDisposable
             using var doc = ParseAnswer(answer, name, Name);
             if (doc.RootElement.TryGetProperty("error", out var error))
             {
-                throw new ImplementationErrorException($"{name} answered error {Wire.Show(error)}");
+                throw new ImplementationErrorException($"{name} answered error {ErrorText(error)}");
             }
 
             try

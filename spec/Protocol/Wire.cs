@@ -401,7 +401,11 @@ public static class Wire
     /// <param name="text">The text.</param>
     /// <param name="max">The most characters to keep.</param>
     /// <returns>The text, cut with an ellipsis when longer.</returns>
-    public static string Brief(string text, int max) => text.Length <= max ? text : text[..max] + "...";
+    public static string Brief(string text, int max)
+    {
+        text = Values.InputQuote.Escape(text); // the peer's text never reaches a console or report raw (issue 28)
+        return text.Length <= max ? text : text[..max] + "...";
+    }
 
     private static CellId CellValue(JsonElement v, string name) =>
         v.ValueKind == JsonValueKind.String && CellIdText.TryParse(v.GetString(), out var id)

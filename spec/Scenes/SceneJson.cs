@@ -276,6 +276,12 @@ public static class SceneJson
             {
                 var id = b.Block.BlockCell.WithLow(b.Portals[p].Cell);
                 r.Require(known.ContainsKey(id), $"{at0}.portals[{p}].cell", $"unknown cell {id} (not declared in cells or unloadedCells)");
+                if (b.Portals[p].Portal != BldPortal.None && cells.FirstOrDefault(c => c.Id == id) is { } target)
+                {
+                    // A building portal names one of its cell's portals, or carries retail's invalid marker 0xFFFF
+                    // (facts §5, EnvTransit; generated "invalid doors"); issue 28: portal 99 of a 2-portal cell was accepted.
+                    r.Require(b.Portals[p].Portal < target.Portals.Count, $"{at0}.portals[{p}].portal", $"cell {id} has {target.Portals.Count} portals (0..{target.Portals.Count - 1}, or 65535 for none), not portal {b.Portals[p].Portal}");
+                }
             }
         }
 
