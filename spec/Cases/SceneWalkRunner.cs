@@ -14,7 +14,8 @@ public static class SceneWalkRunner
     /// <summary>Runs the walk.</summary>
     /// <param name="impl">The implementation.</param>
     /// <param name="sw">The scene walk.</param>
-    /// <param name="loadCells">True to ask each step as a movement transition (no visibility filter, facts §6.14); the implementation must offer <see cref="Op.FindCellTransition"/>.</param>
+    /// <param name="loadCells">True to ask each step as a movement transition (no visibility filter, facts §6.14); the implementation must offer <see cref="Op.FindCellTransition"/>.
+    /// A step's <see cref="WalkStep.LoadCells"/> says whether the filter was off: not for an implementation declaring ACE's transition filter (facts §7 #9).</param>
     /// <returns>One record for the start query and one per step.</returns>
     public static IReadOnlyList<WalkStep> Run(ICellPhysics impl, SceneWalk sw, bool loadCells = false)
     {
@@ -42,7 +43,7 @@ public static class SceneWalkRunner
                 current = answer.Containing;
             }
 
-            steps.Add(new WalkStep(i, query.Cell, before, worldX, worldY, query, answer.Cells, answer.Containing, current) { Answer = answer, LoadCells = loadCells });
+            steps.Add(new WalkStep(i, query.Cell, before, worldX, worldY, query, answer.Cells, answer.Containing, current) { Answer = answer, LoadCells = loadCells && !impl.Indoor.AceTransitionFilters });
         }
 
         return steps;
