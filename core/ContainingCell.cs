@@ -20,7 +20,7 @@ public static partial class ContainingCell
         if (policy == PickPolicy.CurrentFirst && current.IsLand)
         {
             int i = array.IndexOf(current);
-            if (i >= 0 && array[i].Loaded && LandSquareContains(current, center - LandDefs.GetBlockOffset(position, current)))
+            if (i >= 0 && array[i].Loaded && LandCellContains(current, center - LandDefs.GetBlockOffset(position, current)))
             {
                 return current;
             }
@@ -35,7 +35,7 @@ public static partial class ContainingCell
                 continue;
             }
 
-            if (LandSquareContains(entry.Id, center - LandDefs.GetBlockOffset(position, entry.Id)))
+            if (LandCellContains(entry.Id, center - LandDefs.GetBlockOffset(position, entry.Id)))
             {
                 pick = entry.Id;
             }
@@ -45,16 +45,12 @@ public static partial class ContainingCell
     }
 
     /// <summary>
-    /// Tests a block-frame point against a land cell's closed square (facts §5.5: the union of the two terrain
-    /// triangles is the closed square, so shared edges belong to every adjacent cell; z is ignored).
+    /// Tests a block-frame point against a land cell as retail's <c>point_in_cell</c> does (facts §5.5): float32
+    /// <c>point_in_poly2D</c> over the two terrain triangles (<see cref="TerrainTriangles"/>). Up to rounding the union is
+    /// the closed square, so shared edges belong to every adjacent cell; z is ignored.
     /// </summary>
     /// <param name="cell">A land cell id.</param>
     /// <param name="p">A point in the cell's block frame.</param>
-    /// <returns>True when inside or on the square.</returns>
-    public static bool LandSquareContains(CellId cell, Vector3 p)
-    {
-        int idx = cell.Low - 1;
-        float west = LandDefs.CellLength * (idx >> 3), south = LandDefs.CellLength * (idx & 7);
-        return p.X >= west && p.X <= west + LandDefs.CellLength && p.Y >= south && p.Y <= south + LandDefs.CellLength;
-    }
+    /// <returns>True when inside or on the cell.</returns>
+    public static bool LandCellContains(CellId cell, Vector3 p) => TerrainTriangles.Contains(cell, p);
 }

@@ -56,6 +56,8 @@ public sealed class GateOutputTests
         string findings = suite.Element("system-out")!.Value;
         Assert.Contains("F1 [nonfinite] breaks ", findings, StringComparison.Ordinal);
         Assert.Contains("F2 [huge] breaks ", findings, StringComparison.Ordinal);
+        Assert.Contains("NONFINITE-REJECTED (hardening, ", findings, StringComparison.Ordinal); // issue #29: the rule and its facts section
+        Assert.Contains("LANDDEFS-CONFORMANCE (retail, ", findings, StringComparison.Ordinal);
         foreach (var failure in suite.Elements("testcase").Select(t => t.Element("failure")).OfType<XElement>())
         {
             Assert.Contains("finding:   F", failure.Value, StringComparison.Ordinal); // every failure says which root cause it is

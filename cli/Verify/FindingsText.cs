@@ -1,3 +1,4 @@
+using AcPhys.Spec.Invariants;
 using AcPhys.Spec.Running;
 
 namespace AcPhys.Cli.Verify;
@@ -32,6 +33,11 @@ internal static class FindingsText
         {
             var (id, v) = f.Example;
             text.Append($"  F{++n} [{f.Cause}] breaks {string.Join(", ", f.Invariants)}\n");
+            foreach (string rule in Rules(f))
+            {
+                text.Append($"     {rule}\n");
+            }
+
             text.Append($"     smallest case ({id}): {Brief(v.CaseText)}\n");
             text.Append($"     {Brief(v.Message)}\n");
         }
@@ -58,6 +64,14 @@ internal static class FindingsText
             md.Append($"| F{++n} | `{f.Cause}` | {string.Join(", ", f.Invariants.Select(i => $"`{i}`"))} | `{Brief(v.CaseText).Replace("|", "\\|", StringComparison.Ordinal)}` |\n");
         }
     }
+
+    /// <summary>Returns, per invariant a finding breaks, the rule it states and where the facts say so (issue #29: a port
+    /// maintainer reads which retail rule the port departs from, and whether it is a retail statement or a hardening rule).</summary>
+    /// <param name="f">The finding.</param>
+    /// <returns>One line per invariant.</returns>
+    public static IEnumerable<string> Rules(Finding f) =>
+        f.Invariants.Select(InvariantCatalogue.Find).OfType<Invariant>().Select(i =>
+            $"{i.Id} ({(i.Scope is { } scope ? InvariantScope.Name(scope) : "rule")}, {i.Source}): {Brief(i.Statement)}");
 
     private static string Brief(string text)
     {

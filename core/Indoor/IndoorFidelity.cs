@@ -1,7 +1,7 @@
 namespace AcPhys.Core;
 
 /// <summary>
-/// Where ACE and retail differ on the indoor paths (facts §7 #6–#13), plus one non-retail fix a port may choose.
+/// Where ACE and retail differ on the indoor paths (facts §7 #6–#13, #9 included), plus one non-retail fix a port may choose.
 /// Retail by default. The parts-variant difference #14 is not modelled (no parts transit indoors yet).
 /// </summary>
 /// <param name="AceKeepsStaleCells">#6: find_cell_list does not clear the array (entries of earlier calls survive).</param>
@@ -12,6 +12,8 @@ namespace AcPhys.Core;
 /// <param name="AceOutsideByCellId">#12: an exit portal is OtherCellId == 0xFFFF instead of retail's flag 4.</param>
 /// <param name="AceNoPortalGuard">#13: point_in_cell answers for a cell without portals (retail answers false).</param>
 /// <param name="DropUnloadedLandCells">#2: land cells of unloaded blocks are skipped instead of added as load hints.</param>
+/// <param name="AceTransitionFilters">#9: a movement transition runs the visibility filter as static placement does (a fresh ACE
+/// CellArray has LoadCells false; retail's CTransition::init sets do_not_load_cells = 0, so retail does not filter).</param>
 /// <param name="ReframeTransit">Not retail: transit and building tests subtract GetBlockOffset(position, cell) from sphere centres, so a building owned by a neighbouring block is entered at once (facts §6.11 says retail does not).</param>
 public readonly record struct IndoorFidelity(
     bool AceKeepsStaleCells = false,
@@ -22,13 +24,14 @@ public readonly record struct IndoorFidelity(
     bool AceOutsideByCellId = false,
     bool AceNoPortalGuard = false,
     bool DropUnloadedLandCells = false,
-    bool ReframeTransit = false)
+    bool ReframeTransit = false,
+    bool AceTransitionFilters = false)
 {
     /// <summary>Gets retail behaviour.</summary>
     public static IndoorFidelity Retail => default;
 
     /// <summary>Gets ACE's behaviour on every documented difference.</summary>
-    public static IndoorFidelity Ace => new(true, true, true, true, true, true, true, true);
+    public static IndoorFidelity Ace => new(true, true, true, true, true, true, true, true, AceTransitionFilters: true);
 
     /// <summary>Gets the outdoor part of this fidelity.</summary>
     public OutdoorFidelity Outdoor => new(DropUnloadedLandCells);

@@ -82,7 +82,9 @@ public static class SceneQuery
         }
 
         bool filterGuard = fidelity.AceFilterOutsideGuard || (visible && !spheres.IsEmpty);
-        if (!options.LoadCells && indoor && filterGuard && !(fidelity.AceEarlyReturn && interiorPick))
+        // ACE's movement transitions filter too (facts §4 step 5, §7 #9): its fresh CellArray has LoadCells false.
+        bool loadCells = options.LoadCells && !fidelity.AceTransitionFilters;
+        if (!loadCells && indoor && filterGuard && !(fidelity.AceEarlyReturn && interiorPick))
         {
             FilterVisible(array, scene, position);
         }
@@ -102,7 +104,7 @@ public static class SceneQuery
         var local = p - LandDefs.GetBlockOffset(position, cell);
         if (cell.IsLand)
         {
-            return ContainingCell.LandSquareContains(cell, local);
+            return ContainingCell.LandCellContains(cell, local);
         }
 
         return scene.GetEnvCell(cell) is { } env && env.PointInCell(local, fidelity);

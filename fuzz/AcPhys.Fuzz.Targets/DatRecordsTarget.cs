@@ -102,7 +102,7 @@ public sealed class DatRecordsTarget : FuzzTarget
             }
         }
 
-        seeds["landblock"] = Input(RecordType.Landblock, LandblockRecord.WriteFlat(0x4041FFFF));
+        seeds["landblock"] = Input(RecordType.Landblock, LandblockRecord.WriteFlat(0x4041FFFF, hasObjects: true));
         return seeds;
     }
 }

@@ -80,6 +80,21 @@ public sealed class ConformanceBites
         Assert.Equal(transition.Cells.Count, transition.Loaded!.Count);
     }
 
+    [Fact(DisplayName = "FIND-CELL-CONFORMANCE: a port whose transitions filter as ACE's do (facts §7 #9) passes declaring ace-transition-filter or ace, and fails declaring retail")]
+    public void AceTransitionFilterIsDeclarable()
+    {
+        var room = Cottage.Cells[0];
+        var spheres = new[] { new Sphere(new Vector3(room.Origin.X + 3, room.Origin.Y + 0.2f, 0.6f), 0.5f) };
+        var filtering = new ReferenceAdapter(PickPolicy.Retail) { Indoor = new IndoorFidelity(AceTransitionFilters: true) };
+        Assert.DoesNotContain(filtering.FindCell(Cottage, room.Id, spheres, CellId.None, true).Cells, c => c.IsLand);
+
+        var seed = PropertyRun.SeedFor("FIND-CELL-CONFORMANCE");
+        Assert.Equal(ResultStatus.Passed, ConformanceInvariants.FindCell.Run(filtering, 2_000, seed).Status);
+        var ace = new ReferenceAdapter(PickPolicy.Retail, outdoor: OutdoorFidelity.Ace) { Indoor = IndoorFidelity.Ace };
+        Assert.Equal(ResultStatus.Passed, ConformanceInvariants.FindCell.Run(ace, 2_000, seed).Status);
+        Assert.Equal(ResultStatus.Failed, ConformanceInvariants.FindCell.Run(new Undeclared(filtering, PickPolicy.Retail) { HidesIndoorFidelity = true }, 2_000, seed, maxClasses: 1).Status);
+    }
+
     // Reports every load hint as a loaded cell.
     private sealed class FlipHints : Forwarding
     {

@@ -20,6 +20,7 @@ public static class FidelityNames
         ("ace-no-portal-guard", f => f.AceNoPortalGuard, f => f with { AceNoPortalGuard = true }),
         ("drop-unloaded-land-cells", f => f.DropUnloadedLandCells, f => f with { DropUnloadedLandCells = true }),
         ("reframe-transit", f => f.ReframeTransit, f => f with { ReframeTransit = true }),
+        ("ace-transition-filter", f => f.AceTransitionFilters, f => f with { AceTransitionFilters = true }),
     ];
 
     /// <summary>The name of every ACE difference at once.</summary>

@@ -43,6 +43,11 @@ public static class PlaceClasses
         {
             var s = c.Spheres[0];
             tags.Add("centre:" + Place(s.Center.X, s.Center.Y, s.Radius));
+            if (NearCorner(s.Center.X, s.Center.Y))
+            {
+                tags.Add("centre:within-1um-of-a-corner");
+            }
+
             tags.Add(s.Radius == 0 ? "radius:0" : s.Radius >= 24 ? "radius:>=24" : s.Radius > 12 ? "radius:>12" : "radius:<=12");
         }
 
@@ -180,6 +185,13 @@ public static class PlaceClasses
         }
 
         return cx < r || cy < r ? "near-cell-line" : "interior";
+    }
+
+    // Within a micrometre of a cell corner but not on it: where retail's float32 triangles and the closed square differ (facts §5.5).
+    private static bool NearCorner(float x, float y)
+    {
+        double cx = Dist(x, 24), cy = Dist(y, 24);
+        return cx < 1e-6 && cy < 1e-6 && (cx != 0 || cy != 0);
     }
 
     private static double Dist(double v, double period) => Math.Abs(v - (period * Math.Round(v / period)));

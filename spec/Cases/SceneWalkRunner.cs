@@ -12,11 +12,14 @@ public static class SceneWalkRunner
     /// <summary>Runs the walk.</summary>
     /// <param name="impl">The implementation.</param>
     /// <param name="sw">The scene walk.</param>
-    /// <param name="loadCells">True to ask each step as a movement transition (no visibility filter, facts §6.14); the implementation must offer <see cref="Op.FindCellTransition"/>.</param>
+    /// <param name="loadCells">True to ask each step as a movement transition (no visibility filter, facts §6.14); the implementation must offer <see cref="Op.FindCellTransition"/>.
+    /// A step's <see cref="WalkStep.LoadCells"/> says whether the filter was off: not for an implementation declaring ACE's transition filter (facts §7 #9).</param>
     /// <returns>One record for the start query and one per step.</returns>
     public static IReadOnlyList<WalkStep> Run(ICellPhysics impl, SceneWalk sw, bool loadCells = false)
     {
         var request = WalkRunner.Request(sw.Walk, sw.Scene, loadCells);
-        return WalkRunner.Trace(request, impl.FindCellWalk(request), loadCells);
+
+        // A step's LoadCells says whether the filter was off: ACE's transitions filter (facts §7 #9).
+        return WalkRunner.Trace(request, impl.FindCellWalk(request), loadCells && !impl.Indoor.AceTransitionFilters);
     }
 }

@@ -35,10 +35,15 @@ public static class DatSceneReader
         }
 
         var landblocks = new HashSet<LandblockId>();
+        var withoutObjects = new HashSet<LandblockId>();
         foreach (var r in manifest.Records.Where(r => r.Type == RecordType.Landblock))
         {
-            LandblockRecord.ReadFlat(load(r), r.Id);
-            landblocks.Add(new LandblockId((ushort)(r.Id >> 16)));
+            var block = new LandblockId((ushort)(r.Id >> 16));
+            landblocks.Add(block);
+            if (!LandblockRecord.ReadFlat(load(r), r.Id))
+            {
+                withoutObjects.Add(block);
+            }
         }
 
         Require(landblocks.SetEquals(manifest.Blocks), $"manifest.json: the Landblock records ({string.Join(", ", landblocks)}) are not the loaded blocks ({string.Join(", ", manifest.Blocks)})");
@@ -56,7 +61,9 @@ public static class DatSceneReader
         }
 
         var buildings = new List<SceneBuilding>();
-        foreach (var r in manifest.Records.Where(r => r.Type == RecordType.LandblockInfo))
+        // A loaded block whose Landblock says hasObjects 0 has its LandblockInfo skipped, as ACE skips it (dat-records.md):
+        // read the records as a faithful port does, so the scene compared with is the scene the port sees.
+        foreach (var r in manifest.Records.Where(r => r.Type == RecordType.LandblockInfo && !withoutObjects.Contains(new LandblockId((ushort)(r.Id >> 16)))))
         {
             var info = LandblockInfoRecord.Read(load(r), r.Id);
             var block = new LandblockId((ushort)(r.Id >> 16));

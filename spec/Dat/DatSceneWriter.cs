@@ -30,14 +30,16 @@ public static class DatSceneWriter
     public static DatExport Write(Scene scene, string title, string source)
     {
         var records = new List<(ManifestRecord, byte[])>();
+
+        // LandblockInfo: blocks in order of their first building, then blocks that hold loaded cells only. Their
+        // Landblock records say hasObjects 1, or a reader that honours the flag (ACE) never reads them.
+        var infoBlocks = scene.Buildings.Select(b => b.Block).Concat(scene.Cells.Select(c => c.Id.Landblock)).Distinct().ToList();
         foreach (var b in scene.Blocks)
         {
             uint id = ((uint)b.Value << 16) | 0xFFFF;
-            records.Add((new ManifestRecord(id, false, RecordType.Landblock), LandblockRecord.WriteFlat(id)));
+            records.Add((new ManifestRecord(id, false, RecordType.Landblock), LandblockRecord.WriteFlat(id, infoBlocks.Contains(b))));
         }
 
-        // LandblockInfo: blocks in order of their first building, then blocks that hold loaded cells only.
-        var infoBlocks = scene.Buildings.Select(b => b.Block).Concat(scene.Cells.Select(c => c.Id.Landblock)).Distinct().ToList();
         foreach (var block in infoBlocks)
         {
             uint id = ((uint)block.Value << 16) | 0xFFFE;

@@ -3,20 +3,23 @@ namespace AcPhys.Spec.Dat;
 /// <summary>
 /// A Landblock record 0xAABBFFFF (dat-records.md, Landblock): hasObjects, 81 terrain words, 81 height bytes (bytes,
 /// not the WORDs ACE's comment claims), ALIGN 251 → 252. Scenes are written flat: terrain 0 and height index 0.
+/// hasObjects is 1 exactly when the block's LandblockInfo is written: ACE reads a LandblockInfo only when the flag is 1
+/// (dat-records.md), so a faithful reader would otherwise see none of the block's buildings (issue #29).
 /// </summary>
 public static class LandblockRecord
 {
     /// <summary>The record size: 4 + 4 + 162 + 81 + 1 pad.</summary>
     public const int Length = 252;
 
-    /// <summary>Writes a flat landblock (no objects, terrain 0, heights 0).</summary>
+    /// <summary>Writes a flat landblock (terrain 0, heights 0).</summary>
     /// <param name="id">The record id (0xAABBFFFF).</param>
+    /// <param name="hasObjects">Whether the block's LandblockInfo follows (buildings, env cells).</param>
     /// <returns>The bytes.</returns>
-    public static byte[] WriteFlat(uint id)
+    public static byte[] WriteFlat(uint id, bool hasObjects)
     {
         var w = new ByteWriter();
         w.U32(id);
-        w.U32(0);
+        w.U32(hasObjects ? 1u : 0u);
         for (int i = 0; i < 81; i++)
         {
             w.U16(0);
@@ -34,14 +37,15 @@ public static class LandblockRecord
     /// <summary>Reads a landblock and checks it is flat (scenes carry no terrain).</summary>
     /// <param name="data">The bytes.</param>
     /// <param name="expectedId">The id.</param>
-    /// <exception cref="DatFormatException">Not a landblock of this id, not flat, or trailing bytes.</exception>
-    public static void ReadFlat(byte[] data, uint expectedId)
+    /// <returns>hasObjects: whether a reader reads the block's LandblockInfo.</returns>
+    /// <exception cref="DatFormatException">Not a landblock of this id, hasObjects other than 0 or 1, not flat, or trailing bytes.</exception>
+    public static bool ReadFlat(byte[] data, uint expectedId)
     {
         var r = new ByteReader(data, "Landblock " + RecordIds.Text(expectedId));
         uint id = r.U32("id");
         r.Require(id == expectedId, "id", 0, $"record id {RecordIds.Text(id)} is not its name {RecordIds.Text(expectedId)}");
         uint hasObjects = r.U32("hasObjects");
-        r.Require(hasObjects == 0, "hasObjects", 4, $"{hasObjects}: scenes carry no landblock objects (expected 0)");
+        r.Require(hasObjects <= 1, "hasObjects", 4, $"{hasObjects}: expected 0 or 1 (ACE treats anything but 1 as 0)");
         for (int i = 0; i < 81; i++)
         {
             int at = r.Position;
@@ -58,5 +62,6 @@ public static class LandblockRecord
 
         r.Align("height");
         r.End();
+        return hasObjects == 1;
     }
 }

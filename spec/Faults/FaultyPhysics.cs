@@ -173,7 +173,7 @@ internal sealed class FaultyPhysics : ICellPhysics
         AddAllOutsideCells(cells, cell, origin, spheres);
         var containing = CellId.None;
         if (spheres.Count > 0 && Is(PlantedFaults.StickyPick) && current.IsLand && cells.Contains(current)
-            && ContainingCell.LandSquareContains(current, spheres[0].Center - LandDefs.GetBlockOffset(cell, current)))
+            && ContainingCell.LandCellContains(current, spheres[0].Center - LandDefs.GetBlockOffset(cell, current)))
         {
             return new FindCellResult(cells, current); // sticky-pick: current-first behaviour behind a retail declaration
         }
@@ -187,7 +187,7 @@ internal sealed class FaultyPhysics : ICellPhysics
                     continue; // #106: the pick, too, only looked at the current block's 8 × 8 grid
                 }
 
-                if (id.IsLand && ContainingCell.LandSquareContains(id, spheres[0].Center - LandDefs.GetBlockOffset(cell, id)))
+                if (id.IsLand && ContainingCell.LandCellContains(id, spheres[0].Center - LandDefs.GetBlockOffset(cell, id)))
                 {
                     containing = id;
                     if (Is(PlantedFaults.FirstHitOutdoorPick))

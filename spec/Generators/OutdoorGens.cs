@@ -58,11 +58,27 @@ public static class OutdoorGens
     public static Gen<float> ExtremeCoordinates { get; } = Gen.Elements(
         float.NaN, float.PositiveInfinity, float.NegativeInfinity, float.Epsilon, -float.Epsilon, 1e-40f, -1e-40f, 1e6f, -1e6f, 3.4e9f, -7.2e12f, 1e15f, -1e15f);
 
+    /// <summary>
+    /// Gets centres within rounding of a cell corner (issue #29, facts §5.5): one coordinate on a cell line, the other
+    /// a tenth to half a micrometre off the block's own line 0 — the only place where float32 can tell such a point from
+    /// the corner, and where retail's terrain triangles accept points that the closed square does not
+    /// (docs/conformance.md, "Land-cell edges").
+    /// </summary>
+    public static Gen<Sphere> NearCorners { get; } =
+        Gen.Zip(Gen.Zip(Gen.Choose(0, 8), Gen.Elements(-5e-7f, -2e-7f, -1e-7f, 1e-7f, 5e-7f)), Gen.Zip(Gen.Elements(true, false), Radii))
+            .Select(t =>
+            {
+                float line = 24f * t.Item1.Item1, off = t.Item1.Item2;
+                var centre = t.Item2.Item1 ? new Vector3(off, line, 0.5f) : new Vector3(line, off, 0.5f);
+                return new Sphere(centre, t.Item2.Item2);
+            });
+
     /// <summary>Gets spheres (z small, irrelevant to outdoor membership).</summary>
     public static Gen<Sphere> Spheres { get; } = Gen.Frequency(
         (20, Gen.Zip(Gen.Zip(Coordinates, Coordinates), Radii).Select(t => new Sphere(new Vector3(t.Item1.Item1, t.Item1.Item2, 0.5f), t.Item2))),
         (3, Gen.Zip(Gen.Zip(Coordinates, Coordinates), Gen.Choose(0, 3)).Select(t => Touching(t.Item1.Item1, t.Item1.Item2, t.Item2))),
-        (2, Gen.Zip(Gen.Zip(ExtremeCoordinates, Coordinates), Gen.Zip(Radii, Gen.Choose(0, 2))).Select(t => Extreme(t.Item1.Item1, t.Item1.Item2, t.Item2.Item1, t.Item2.Item2))));
+        (2, Gen.Zip(Gen.Zip(ExtremeCoordinates, Coordinates), Gen.Zip(Radii, Gen.Choose(0, 2))).Select(t => Extreme(t.Item1.Item1, t.Item1.Item2, t.Item2.Item1, t.Item2.Item2))),
+        (1, NearCorners));
 
     /// <summary>Gets outdoor queries: no spheres (the position's own point is used, facts §3.3 step 3), or 1–3 spheres (multi-sphere bodies).</summary>
     public static Gen<OutdoorCase> Cases { get; } =

@@ -27,6 +27,7 @@ public static class ExactSteps
     {
         var scene = ExactScene.Of(w.Scene);
         bool applied = false;
+        string? why = null;
         foreach (bool loadCells in (impl.Ops & Op.FindCellTransition) != 0 ? [false, true] : new[] { false })
         {
             foreach (var s in SceneWalkRunner.Run(impl, w, loadCells))
@@ -38,10 +39,11 @@ public static class ExactSteps
                 }
 
                 applied |= o.Verdict == Verdict.Holds;
+                why ??= o.Message;
             }
         }
 
-        return applied ? Outcome.Holds : Outcome.Vacuous;
+        return applied ? Outcome.Holds : why is null ? Outcome.Vacuous : Outcome.VacuousBecause(why);
     }
 
     /// <summary>

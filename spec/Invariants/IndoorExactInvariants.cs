@@ -44,7 +44,7 @@ public static class IndoorExactInvariants
     {
         if (s.Answer?.HitsInteriorCell is not bool hits)
         {
-            return Outcome.Vacuous;
+            return Outcome.VacuousBecause("the implementation does not report hits_interior_cell");
         }
 
         bool indoor = s.Query.Cell.IsIndoorByLowWord; // facts §1.1: 0xFFFF counts as indoor too

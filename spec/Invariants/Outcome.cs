@@ -15,7 +15,7 @@ public enum Verdict
 
 /// <summary>The result of checking one invariant on one case.</summary>
 /// <param name="Verdict">Held, vacuous or violated.</param>
-/// <param name="Message">For a violation, what was observed against what was expected.</param>
+/// <param name="Message">For a violation, what was observed against what was expected; for a vacuous case, why it could not be judged (or null).</param>
 public readonly record struct Outcome(Verdict Verdict, string? Message)
 {
     /// <summary>Gets the outcome "applied and held".</summary>
@@ -23,6 +23,12 @@ public readonly record struct Outcome(Verdict Verdict, string? Message)
 
     /// <summary>Gets the outcome "did not apply".</summary>
     public static Outcome Vacuous => new(Verdict.Vacuous, null);
+
+    /// <summary>Returns "did not apply" with the reason (e.g. an answer field the implementation does not send), so a run in
+    /// which no case applied can say why it tested nothing (issue #29).</summary>
+    /// <param name="why">Why the case could not be judged.</param>
+    /// <returns>The outcome.</returns>
+    public static Outcome VacuousBecause(string why) => new(Verdict.Vacuous, why);
 
     /// <summary>Returns a violation.</summary>
     /// <param name="message">Observed against expected.</param>

@@ -83,6 +83,7 @@ public static class CatalogueRunner
         var stopwatch = Stopwatch.StartNew();
         var classes = new Dictionary<string, int>();
         int generated = 0, applicable = 0;
+        string? vacuousWhy = null;
         bool failing = false;
         TimeSpan? timeToFailure = null;
         Violation? firstSeen = null;
@@ -105,9 +106,13 @@ public static class CatalogueRunner
             if (!failing)
             {
                 generated++;
-                if (outcome.Verdict == Verdict.Holds)
+                if (outcome.Verdict != Verdict.Vacuous)
                 {
                     applicable++;
+                }
+                else
+                {
+                    vacuousWhy ??= outcome.Message;
                 }
 
                 foreach (var tag in domain.Classes(c))
@@ -176,7 +181,12 @@ public static class CatalogueRunner
             };
         }
 
-        return result;
+        // Never PASS with nothing checked (issue #29): no generated case could judge the invariant.
+        return applicable > 0 ? result : result with
+        {
+            Status = ResultStatus.NotTested,
+            NotTestedReason = $"none of the {generated} generated cases could judge it" + (vacuousWhy is null ? string.Empty : $" ({vacuousWhy})"),
+        };
     }
 
     /// <summary>Runs every invariant of the catalogue under a profile.</summary>

@@ -184,13 +184,16 @@ internal sealed class RecordReader
     /// <summary>Checks a Landblock record: its id and its length (membership needs no terrain: land cells are flat squares).</summary>
     /// <param name="bytes">The record.</param>
     /// <param name="id">Its id.</param>
-    public static void Landblock(byte[] bytes, uint id)
+    /// <returns>hasObjects as ACE reads it: true only when it is 1 (then the block's LandblockInfo is read).</returns>
+    public static bool Landblock(byte[] bytes, uint id)
     {
         var r = new RecordReader(bytes, $"Landblock 0x{id:X8}");
         r.Id(id);
-        r.Skip(4 + (2 * 81) + 81, "hasObjects/terrain/height");
+        bool hasObjects = r.U32("hasObjects") == 1;
+        r.Skip((2 * 81) + 81, "terrain/height");
         r.Align("height");
         r.End();
+        return hasObjects;
     }
 
     private static uint Tag(string letters) => ((uint)letters[0] << 24) | ((uint)letters[1] << 16) | ((uint)letters[2] << 8) | letters[3];

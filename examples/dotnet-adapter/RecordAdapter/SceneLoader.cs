@@ -51,7 +51,8 @@ internal static class SceneLoader
         var environments = new Dictionary<uint, Dictionary<uint, CellStructRecord>>();
         var landblocks = new HashSet<LandblockId>();
         var numCells = new Dictionary<LandblockId, uint>();
-        var buildings = new List<Building>();
+        var buildingsOf = new Dictionary<LandblockId, List<Building>>();
+        var withObjects = new HashSet<LandblockId>();
         foreach (var (id, type, data) in records)
         {
             var block = new LandblockId((ushort)(id >> 16));
@@ -61,16 +62,23 @@ internal static class SceneLoader
                     environments[id] = RecordReader.Environment(data, id);
                     break;
                 case RecordType.Landblock:
-                    RecordReader.Landblock(data, id);
+                    if (RecordReader.Landblock(data, id))
+                    {
+                        withObjects.Add(block);
+                    }
+
                     landblocks.Add(block);
                     break;
                 case RecordType.LandblockInfo:
                     var (count, list) = RecordReader.LandblockInfo(data, id);
                     numCells[block] = count;
-                    buildings.AddRange(list.Select(b => new Building(block, b.Frame.Origin, b.Portals)));
+                    buildingsOf[block] = [.. list.Select(b => new Building(block, b.Frame.Origin, b.Portals))];
                     break;
             }
         }
+
+        // As ACE: a loaded block's buildings are read only when its Landblock record says hasObjects 1.
+        var buildings = buildingsOf.Where(kv => !landblocks.Contains(kv.Key) || withObjects.Contains(kv.Key)).SelectMany(kv => kv.Value).ToList();
 
         Expect(landblocks.SetEquals(blocks), $"{m}.blocks: the loaded blocks ({string.Join(", ", blocks)}) are not those with a Landblock record ({string.Join(", ", landblocks)})");
         var cells = new List<EnvCell>();
