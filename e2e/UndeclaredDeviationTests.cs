@@ -5,7 +5,9 @@ namespace AcPhys.E2E;
 /// <summary>
 /// Every declared deviation is observable (issue 27): the reference serving one deviation over protocol v1 while its
 /// hello announces retail (<c>acphys serve --announce-retail</c>) fails the pr gate. The switches that no scene the
-/// format can express makes visible are listed in docs/facts-coverage.md with the reason, not here.
+/// format can express makes visible are listed in docs/facts-coverage.md with the reason, not here; so is
+/// drop-unloaded-land-cells, caught over the wire in 85 s but after six minutes under heavy load (its first finding is
+/// case 77 of 192 of its class): it is checked in process by FACTS-COVERAGE (props/Coverage).
 /// </summary>
 public sealed class UndeclaredDeviationTests
 {
@@ -15,7 +17,6 @@ public sealed class UndeclaredDeviationTests
     [InlineData("--fidelity ace-early-return")]
     [InlineData("--fidelity ace-load-hint-low-key")]
     [InlineData("--fidelity ace-no-portal-guard")]
-    [InlineData("--fidelity drop-unloaded-land-cells")]
     [InlineData("--fidelity reframe-transit")]
     [InlineData("--pick current-first")]
     public void UndeclaredDeviationFails(string mode)
