@@ -52,6 +52,11 @@ public sealed class SceneDomain : ICaseDomain<SceneWalk>
                 yield return "place:unloaded-neighbours";
             }
 
+            if (c.Closet)
+            {
+                yield return "cell:portal-less"; // facts §5.5, §7 #13: a sealed closet, entered by building entry only
+            }
+
             if (c.Yaw % (MathF.PI / 2) != 0)
             {
                 yield return "yaw:oblique";

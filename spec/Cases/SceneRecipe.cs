@@ -43,6 +43,9 @@ public enum SceneRoute
     /// behind it (their doors, sealed walls and notches: building entry from outside), and away.
     /// </summary>
     Facade,
+
+    /// <summary>A cottage with a sealed closet: from outside straight into the closet's middle and back out (facts §5.5).</summary>
+    Closet,
 }
 
 /// <summary>
@@ -135,7 +138,7 @@ public sealed record SceneRecipe(CottagePlan? Cottage, DungeonPlan? Dungeon, Sce
         string.Create(CultureInfo.InvariantCulture, $"{Shape} {Route} target {Target} r={Radius}{(Spheres > 0 ? $" spheres {Spheres} r1={Radius1} r2={Radius2}" : TwoSpheres ? " x2" : string.Empty)} step≤{StepMax} jitter {Jitter} take {Take}") +
         (Estate is { } e ? " " + e
         : Cottage is { } c
-            ? string.Create(CultureInfo.InvariantCulture, $" at ({c.WorldX:R}, {c.WorldY:R}) yaw {c.Yaw} {c.Width}x{c.Depth} flips {c.Flips}{(c.BackDoor ? " back-door" : string.Empty)}{(c.LoadNeighbours ? string.Empty : " neighbours-unloaded")}")
+            ? string.Create(CultureInfo.InvariantCulture, $" at ({c.WorldX:R}, {c.WorldY:R}) yaw {c.Yaw} {c.Width}x{c.Depth} flips {c.Flips}{(c.BackDoor ? " back-door" : string.Empty)}{(c.LoadNeighbours ? string.Empty : " neighbours-unloaded")}{(c.Closet ? " closet" : string.Empty)}")
             : string.Create(CultureInfo.InvariantCulture, $" at ({Dungeon!.WorldX:R}, {Dungeon.WorldY:R}) length {Dungeon.Length} unloaded {Dungeon.Unloaded} flips {Dungeon.Flips}"));
 
     private (CellId Start, List<Vector3> Points) CottageRoute(CottagePlan p)
@@ -195,6 +198,11 @@ public sealed record SceneRecipe(CottagePlan? Cottage, DungeonPlan? Dungeon, Sce
                 }
 
                 return (start, path);
+            case SceneRoute.Closet:
+                // Outside the closet's south wall, into its middle, back out: the centre is inside a cell without portals.
+                float cx = -CottagePlan.ClosetWidth / 2, cy = MathF.Min(d, 4f) / 2;
+                path = [new Vector3(cx, -2.5f, 0), new Vector3(cx, cy, 0), new Vector3(cx, -2.5f, 0)];
+                break;
             case SceneRoute.Storey:
                 start = p.RoomId(p.Rooms);
                 path = [new Vector3(w / 2, d / 2, CottagePlan.Height), new Vector3(w * 0.25f, d * 0.25f, CottagePlan.Height), new Vector3(w * 0.75f, d * 0.8f, CottagePlan.Height)];

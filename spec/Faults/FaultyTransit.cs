@@ -40,6 +40,11 @@ internal static class FaultyTransit
                 continue;
             }
 
+            if (other is not null && defect == IndoorDefect.PortalGuardInTransit && other.Portals.Length == 0)
+            {
+                continue; // the defect: "a cell nobody can leave is no candidate" (retail only refuses it in point_in_cell, facts §5.5)
+            }
+
             if (other is not null)
             {
                 var frame = defect == IndoorDefect.NeighbourWrongFrame ? cell.Frame : other.Frame; // facts §5.1: the neighbour's own frame
@@ -83,7 +88,8 @@ internal static class FaultyTransit
         foreach (var portal in building.Portals)
         {
             var env = scene.GetEnvCell(landCell.WithLow(portal.OtherCellId));
-            if (env is null || (portal.OtherPortalId == BldPortal.None && defect != IndoorDefect.InvalidBldPortalEntered))
+            if (env is null || (portal.OtherPortalId == BldPortal.None && defect != IndoorDefect.InvalidBldPortalEntered)
+                || (defect == IndoorDefect.PortalGuardInTransit && env.Portals.Length == 0))
             {
                 continue; // facts §5.3: 0xFFFF marks no portal, the entry test is skipped
             }

@@ -47,4 +47,7 @@ internal enum IndoorDefect
 
     /// <summary>ACE's early return after an interior pick (the filter skipped) while declaring retail.</summary>
     EarlyReturnUndeclared,
+
+    /// <summary>A cell without portals is never added by building entry or a portal neighbour test (the point_in_cell guard moved into transit).</summary>
+    PortalGuardInTransit,
 }

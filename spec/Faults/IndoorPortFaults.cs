@@ -132,12 +132,19 @@ public static class IndoorPortFaults
         "facts §4 step 5, §7 #7: retail's loop breaks and falls through to the filter; a port translated ACE's \"break?\" return, so land cells added by a straddled exit survive a static query from a room.",
         ["VISIBILITY", "FIND-CELL-CONFORMANCE"]);
 
+    /// <summary>The portal-less guard applied in transit instead of point_in_cell.</summary>
+    public static readonly PlantedFault PortalGuardInTransit = new(
+        "portal-guard-in-transit",
+        "a cell without portals is never made a candidate (building entry and the neighbour test skip it) instead of only being refused by point_in_cell",
+        "facts §5.5, §7 #13: retail's point_in_cell returns false for a cell with no portals, but building entry (§5.3) and the neighbour test (§5.1) still add it, set HitsInteriorCell and keep it as a candidate; a port that read the guard as \"such a cell is unreachable\" drops it from the array. Seen only where a sealed closet (a cell with no cell portals, entered by its own building portal) is reached.",
+        ["BUILDING-ENTRY-COMPLETE", "FIND-CELL-CONFORMANCE"]);
+
     /// <summary>Gets every fault of this list.</summary>
     public static IReadOnlyList<PlantedFault> All { get; } =
     [
         NeighbourWrongFrame, BuildingFirstPortalOnly, BuildingStopFirstRoom, SnapshotClosure, ExitStraddleOneSided, InvalidBldPortalEntered,
         NeighbourByPlane, WalksNegativeChildren, PickLastEnv, PickLastSphere, FilterDropsHints, HitsInteriorUnset, CloseIsOutside,
-        SphereTestUnpadded, TransitSphere0Only, PickBeforeTransit, HintStraddleOnly, EarlyReturnUndeclared,
+        SphereTestUnpadded, TransitSphere0Only, PickBeforeTransit, HintStraddleOnly, EarlyReturnUndeclared, PortalGuardInTransit,
     ];
 
     /// <summary>Returns the code defect a fault plants in <see cref="FaultySceneQuery"/> (none for a volume or data fault).</summary>
@@ -159,6 +166,7 @@ public static class IndoorPortFaults
         "pick-before-transit" => IndoorDefect.PickBeforeTransit,
         "hint-straddle-only" => IndoorDefect.HintStraddleOnly,
         "early-return-undeclared" => IndoorDefect.EarlyReturnUndeclared,
+        "portal-guard-in-transit" => IndoorDefect.PortalGuardInTransit,
         _ => IndoorDefect.None,
     };
 

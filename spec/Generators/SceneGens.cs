@@ -42,11 +42,12 @@ public static class SceneGens
         (5, from c in Cottages
             from route in Gen.Frequency(
                 (3, Gen.Constant(SceneRoute.Enter)), (3, Gen.Constant(SceneRoute.EnterAndBack)), (2, Gen.Constant(SceneRoute.Through)),
-                (2, Gen.Constant(SceneRoute.PortalJitter)), (2, Gen.Constant(SceneRoute.LineJitter)), (1, Gen.Constant(SceneRoute.Storey)))
+                (2, Gen.Constant(SceneRoute.PortalJitter)), (2, Gen.Constant(SceneRoute.LineJitter)), (1, Gen.Constant(SceneRoute.Storey)),
+                (1, Gen.Constant(SceneRoute.Closet)))
             from target in Gen.Choose(0, c.Rooms - 1)
             from body in Bodies
             select new SceneRecipe(
-                c with { BackDoor = c.BackDoor || route == SceneRoute.Through, Storey = c.Storey || route == SceneRoute.Storey },
+                c with { BackDoor = c.BackDoor || route == SceneRoute.Through, Storey = c.Storey || route == SceneRoute.Storey, Closet = route == SceneRoute.Closet },
                 null, route, target, body.Radius, body.Two, body.Step, body.Jitter, int.MaxValue)),
         (2, from d in Dungeons
             from back in Gen.Elements(SceneRoute.DungeonRun, SceneRoute.DungeonRunAndBack)

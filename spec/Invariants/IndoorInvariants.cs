@@ -25,7 +25,7 @@ public static class IndoorInvariants
             foreach (var s in SceneWalkRunner.Run(impl, w))
             {
                 var c = Center(s);
-                var inside = s.Cells.Select(id => SceneOracle.Cell(w.Scene, id)).FirstOrDefault(cell => cell is not null && SceneOracle.IsLoadedEnv(w.Scene, cell.Id) && SceneOracle.Depth(cell, s.Query.Cell, c) > Margin);
+                var inside = s.Cells.Select(id => SceneOracle.Cell(w.Scene, id)).FirstOrDefault(cell => cell is not null && SceneOracle.IsLoadedEnv(w.Scene, cell.Id) && SceneOracle.Pickable(cell, impl.Indoor) && SceneOracle.Depth(cell, s.Query.Cell, c) > Margin);
                 if (inside is null)
                 {
                     continue;
@@ -112,8 +112,8 @@ public static class IndoorInvariants
 
                 var p = trace[i - 1];
                 var pc = Center(p);
-                var here = SceneOracle.Inside(w.Scene, s.Query.Cell, c, Margin).Select(x => x.Id).ToList();
-                var before = SceneOracle.Inside(w.Scene, p.Query.Cell, pc, Margin).Select(x => x.Id).ToList();
+                var here = SceneOracle.Inside(w.Scene, s.Query.Cell, c, Margin).Where(x => SceneOracle.Pickable(x, impl.Indoor)).Select(x => x.Id).ToList();
+                var before = SceneOracle.Inside(w.Scene, p.Query.Cell, pc, Margin).Where(x => SceneOracle.Pickable(x, impl.Indoor)).Select(x => x.Id).ToList();
                 var both = here.Intersect(before).ToList();
                 if (both.Count > 0)
                 {

@@ -54,6 +54,12 @@ public static class SceneOracle
     /// <returns>True when loaded.</returns>
     public static bool IsLoaded(Scene scene, CellId id) => id.IsLand ? scene.Blocks.Contains(id.Landblock) : IsLoadedEnv(scene, id);
 
+    /// <summary>Tests whether the containing pick may choose a cell: retail's point_in_cell is false for a cell without portals (facts §5.5, §7 #13), ACE's is not.</summary>
+    /// <param name="cell">The cell.</param>
+    /// <param name="fidelity">The declared indoor fidelity.</param>
+    /// <returns>True when the cell's volume decides.</returns>
+    public static bool Pickable(SceneCell cell, IndoorFidelity fidelity) => cell.Portals.Count > 0 || fidelity.AceNoPortalGuard;
+
     /// <summary>Returns the declared cell of an id, or null.</summary>
     /// <param name="scene">The scene.</param>
     /// <param name="id">An id.</param>

@@ -23,6 +23,19 @@ public sealed record CottagePlan(double WorldX, double WorldY, float Yaw, int Ro
     /// <summary>Room height, metres.</summary>
     public const float Height = 3f;
 
+    /// <summary>The sealed closet's width along x, metres (it lies west of room 0).</summary>
+    public const float ClosetWidth = 2.5f;
+
+    /// <summary>
+    /// Gets a value indicating whether a sealed closet stands west of room 0: an env cell with no cell portals, entered
+    /// only by a building portal of its own and listed in every room's VisibleCells. Retail's point_in_cell refuses a cell
+    /// without portals (facts §5.5, §7 #13), so a centre inside it is never in it; ACE's is.
+    /// </summary>
+    public bool Closet { get; init; }
+
+    /// <summary>Gets the closet's cell index (after the rooms and the storey).</summary>
+    public int ClosetIndex => Rooms + (Storey ? 1 : 0);
+
     /// <summary>Gets the block containing the origin.</summary>
     public LandblockId Block => new((byte)Math.Floor(WorldX / 192), (byte)Math.Floor(WorldY / 192));
 
@@ -109,7 +122,7 @@ public static class SceneKit
             Add(n, Vector3.UnitZ, ceiling, 0x100);
         }
 
-        var ids = Enumerable.Range(0, portals.Length).Select(plan.RoomId).ToArray();
+        var ids = Enumerable.Range(0, portals.Length + (plan.Closet ? 1 : 0)).Select(plan.RoomId).ToArray();
         var cells = new List<SceneCell>();
         for (int i = 0; i < portals.Length; i++)
         {
@@ -123,6 +136,16 @@ public static class SceneKit
         if (plan.BackDoor)
         {
             bld.Add(new SceneBldPortal((ushort)(0x100 + n - 1), (ushort)portals[n - 1].FindIndex(p => p.IsExit)));
+        }
+
+        if (plan.Closet)
+        {
+            // No cell portals at all: the building portal is its only way in (its portal index names no portal of the
+            // closet; only 0xFFFF would stop the entry test, facts §5.3). Seen by every room through VisibleCells.
+            var closet = ids[plan.ClosetIndex];
+            var box = ScenePiece.FromBox(new Vector3(-CottagePlan.ClosetWidth, 0, 0), new Vector3(0, MathF.Min(d, 4f), h));
+            cells.Add(new SceneCell(closet, plan.Origin, plan.Rotation, [box], [], [.. ids.Where(x => x != closet)]));
+            bld.Add(new SceneBldPortal(closet.Low, 0));
         }
 
         var (loaded, unloaded) = Blocks(plan.Block, plan.LoadNeighbours);
