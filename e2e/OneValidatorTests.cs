@@ -7,7 +7,7 @@ namespace AcPhys.E2E;
 
 /// <summary>
 /// One validator (issue 19): a protocol request to <c>serve</c> is refused for exactly what a corpus file is refused
-/// for, with the same problem text (the rules live in spec/Values); the sphere-list rule is shared too (protocol queries may be empty, walk files need sphere 0).
+/// for, with the same problem text (the rules live in formats/Values); the sphere-list rule is shared too (protocol queries may be empty, walk files need sphere 0).
 /// </summary>
 public sealed class OneValidatorTests
 {

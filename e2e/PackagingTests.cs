@@ -4,41 +4,29 @@ using AcPhys.E2E.Support;
 
 namespace AcPhys.E2E;
 
-/// <summary>packaging/pack.sh: AcPhys.Core, AcPhys.Spec (depending on Core) and the acphys .NET tool; the tool installs from the local folder and runs.</summary>
-public sealed class PackagingTests
+/// <summary>
+/// packaging/pack.sh: AcPhys.Core, AcPhys.Contract (depending on Core only), AcPhys.Formats, AcPhys.Spec and the acphys
+/// .NET tool, packed once for the class; the tool installs from the local folder and runs, and an adapter builds
+/// against the contract package alone.
+/// </summary>
+public sealed class PackagingTests(PackagingTests.PackedFolder packed) : IClassFixture<PackagingTests.PackedFolder>
 {
     [Fact]
     public void ToolInstallsFromTheLocallyPackedPackageAndRuns()
     {
-        string configuration = AppContext.BaseDirectory.Contains("/Debug/", StringComparison.Ordinal) ? "Debug" : "Release";
-        string work = Directory.CreateTempSubdirectory("acphys-pack-").FullName;
-        try
+        string packages = packed.Packages, version = packed.Version, tools = Path.Combine(packed.Work, "tools");
+        foreach (string id in new[] { "AcPhys.Core", "AcPhys.Contract", "AcPhys.Formats", "AcPhys.Spec", "AcPhys.Cli" })
         {
-            PackInstallRun(work, configuration);
-        }
-        finally
-        {
-            Directory.Delete(work, recursive: true);
-        }
-    }
-
-    private static void PackInstallRun(string work, string configuration)
-    {
-        string packages = Path.Combine(work, "packages"), tools = Path.Combine(work, "tools");
-
-        // A fresh version each run, so the install cannot be served a stale copy from the NuGet cache.
-        string version = "1.0.0-e2e." + DateTime.UtcNow.ToString("yyyyMMddHHmmssfff", System.Globalization.CultureInfo.InvariantCulture);
-        var pack = Exec("bash", [Path.Combine(RepoPaths.Root, "packaging", "pack.sh"), "--no-build", "-c", configuration, "-o", packages, "--version", version]);
-        Assert.True(pack.Exit == 0, pack.Output);
-        foreach (string id in new[] { "AcPhys.Core", "AcPhys.Spec", "AcPhys.Cli" })
-        {
-            Assert.True(Directory.GetFiles(packages, id + ".*.nupkg").Length == 1, $"{id} not packed:\n{pack.Output}");
+            Assert.True(Directory.GetFiles(packages, id + ".*.nupkg").Length == 1, $"{id} not packed:\n{packed.Output}");
         }
 
+        // The one-way arrows as package dependencies: contract ← formats ← spec, and FsCheck only from spec up.
+        Assert.Equal(["AcPhys.Core"], packed.Dependencies("AcPhys.Contract"));
+        Assert.Equal(["AcPhys.Contract"], packed.Dependencies("AcPhys.Formats"));
+        Assert.Contains("AcPhys.Formats", packed.Dependencies("AcPhys.Spec"));
+        Assert.Contains("FsCheck", packed.Dependencies("AcPhys.Spec"));
         using (var spec = ZipFile.OpenRead(Directory.GetFiles(packages, "AcPhys.Spec.*.nupkg")[0]))
         {
-            using var nuspec = new StreamReader(spec.GetEntry("AcPhys.Spec.nuspec")!.Open());
-            Assert.Contains("<dependency id=\"AcPhys.Core\"", nuspec.ReadToEnd(), StringComparison.Ordinal);
             Assert.NotNull(spec.GetEntry("lib/net10.0/AcPhys.Spec.dll"));
         }
 
@@ -51,6 +39,47 @@ public sealed class PackagingTests
 
         var bad = Exec(Path.Combine(tools, "acphys"), ["verify", "--fault", "trunc-floor", "--only", "ADJUST-RANGE", "--cases", "500", "--quiet"]);
         Assert.True(bad.Exit == 1, bad.Output); // the installed tool bites too
+    }
+
+    [Fact]
+    public void AdapterBuildsAgainstTheContractPackageAloneWithoutFsCheck()
+    {
+        // A port's own project, outside the repository (no Directory.*.props): the example adapter's source and one
+        // package reference, restored from the packed folder only.
+        string project = Directory.CreateDirectory(Path.Combine(packed.Work, "my-port")).FullName;
+        File.Copy(Path.Combine(RepoPaths.Root, "examples", "dotnet-adapter", "MyLandDefsAdapter.cs"), Path.Combine(project, "MyLandDefsAdapter.cs"));
+        File.WriteAllText(Path.Combine(project, "MyPort.csproj"), $$"""
+            <Project Sdk="Microsoft.NET.Sdk">
+              <PropertyGroup>
+                <TargetFramework>net10.0</TargetFramework>
+                <Nullable>enable</Nullable>
+                <ImplicitUsings>enable</ImplicitUsings>
+              </PropertyGroup>
+              <ItemGroup>
+                <PackageReference Include="AcPhys.Contract" Version="{{packed.Version}}" />
+              </ItemGroup>
+            </Project>
+            """);
+        File.WriteAllText(Path.Combine(project, "nuget.config"), $$"""
+            <configuration>
+              <packageSources>
+                <clear />
+                <add key="packed" value="{{packed.Packages}}" />
+              </packageSources>
+            </configuration>
+            """);
+        var build = Exec("dotnet", ["build", Path.Combine(project, "MyPort.csproj"), "-c", "Release", "-nologo", "-v:quiet"]);
+        Assert.True(build.Exit == 0, build.Output);
+
+        string assets = File.ReadAllText(Path.Combine(project, "obj", "project.assets.json"));
+        string deps = File.ReadAllText(Directory.GetFiles(Path.Combine(project, "bin"), "MyPort.deps.json", SearchOption.AllDirectories).Single());
+        Assert.Contains($"\"AcPhys.Contract/{packed.Version}\"", assets, StringComparison.Ordinal);
+        Assert.Contains($"\"AcPhys.Core/{packed.Version}\"", assets, StringComparison.Ordinal);
+        foreach (string heavy in new[] { "FsCheck", "FSharp.Core", "AcPhys.Spec", "AcPhys.Formats" })
+        {
+            Assert.DoesNotContain(heavy, assets, StringComparison.Ordinal);
+            Assert.DoesNotContain(heavy, deps, StringComparison.Ordinal);
+        }
     }
 
     private static (int Exit, string Output) Exec(string file, IEnumerable<string> args)
@@ -73,5 +102,41 @@ public sealed class PackagingTests
         }
 
         return (p.ExitCode, $"{file} {string.Join(' ', info.ArgumentList)} -> {p.ExitCode}\n{stdout.Result}\n{stderr.Result}");
+    }
+
+    /// <summary>The packages of this checkout, packed once (with --no-build: what the test run built) at a fresh version, deleted afterwards.</summary>
+    public sealed class PackedFolder : IDisposable
+    {
+        public PackedFolder()
+        {
+            string configuration = AppContext.BaseDirectory.Contains("/Debug/", StringComparison.Ordinal) ? "Debug" : "Release";
+            Work = Directory.CreateTempSubdirectory("acphys-pack-").FullName;
+            Packages = Path.Combine(Work, "packages");
+
+            // A fresh version each run, so an install or restore cannot be served a stale copy from the NuGet cache.
+            Version = "1.0.0-e2e." + DateTime.UtcNow.ToString("yyyyMMddHHmmssfff", System.Globalization.CultureInfo.InvariantCulture);
+            var pack = Exec("bash", [Path.Combine(RepoPaths.Root, "packaging", "pack.sh"), "--no-build", "-c", configuration, "-o", Packages, "--version", Version]);
+            Output = pack.Output;
+            Assert.True(pack.Exit == 0, pack.Output);
+        }
+
+        public string Work { get; }
+
+        public string Packages { get; }
+
+        public string Version { get; }
+
+        public string Output { get; }
+
+        /// <summary>Returns the package ids a packed package depends on, from its nuspec.</summary>
+        public string[] Dependencies(string id)
+        {
+            using var package = ZipFile.OpenRead(Path.Combine(Packages, $"{id}.{Version}.nupkg"));
+            using var nuspec = new StreamReader(package.GetEntry(id + ".nuspec")!.Open());
+            var doc = System.Xml.Linq.XDocument.Parse(nuspec.ReadToEnd());
+            return [.. doc.Descendants().Where(e => e.Name.LocalName == "dependency").Select(e => (string)e.Attribute("id")!).Distinct()];
+        }
+
+        public void Dispose() => Directory.Delete(Work, recursive: true);
     }
 }

@@ -4,7 +4,7 @@ namespace AcPhys.Cli.Fuzz;
 internal static class HarnessBuild
 {
     /// <summary>The assemblies that get AFL edge probes: the physics, the invariants and faults, the toy.</summary>
-    public static readonly string[] Instrumented = ["AcPhys.Core.dll", "AcPhys.Spec.dll", "AcPhys.Fuzz.Toy.dll"];
+    public static readonly string[] Instrumented = ["AcPhys.Core.dll", "AcPhys.Contract.dll", "AcPhys.Formats.dll", "AcPhys.Spec.dll", "AcPhys.Fuzz.Toy.dll"];
 
     /// <summary>Builds into <see cref="FuzzSettings.BuildDir"/> unless <see cref="FuzzSettings.NoBuild"/> and a build is there.</summary>
     /// <param name="s">The settings.</param>

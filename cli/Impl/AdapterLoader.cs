@@ -6,12 +6,12 @@ namespace AcPhys.Cli.Impl;
 
 /// <summary>
 /// Loads an <see cref="ICellPhysics"/> from a .NET assembly (<c>--impl</c>) in its own <see cref="AssemblyLoadContext"/>:
-/// the adapter's own dependencies resolve next to it (its .deps.json), while the contract assemblies (AcPhys.Spec,
+/// the adapter's own dependencies resolve next to it (its .deps.json), while the contract assemblies (AcPhys.Contract, AcPhys.Formats, AcPhys.Spec,
 /// AcPhys.Core and what they share) come from the tool, so the interface the adapter implements is the tool's.
 /// </summary>
 internal static class AdapterLoader
 {
-    private static readonly HashSet<string> Shared = new(StringComparer.OrdinalIgnoreCase) { "AcPhys.Spec", "AcPhys.Core", "FsCheck", "FSharp.Core" };
+    private static readonly HashSet<string> Shared = new(StringComparer.OrdinalIgnoreCase) { "AcPhys.Contract", "AcPhys.Formats", "AcPhys.Spec", "AcPhys.Core", "FsCheck", "FSharp.Core" };
 
     /// <summary>Loads the assembly and creates its adapter.</summary>
     /// <param name="path">The assembly path.</param>
@@ -44,7 +44,7 @@ internal static class AdapterLoader
         if (candidates.Length == 0)
         {
             string hint = types.Any(t => t.GetInterfaces().Any(i => i.FullName == typeof(ICellPhysics).FullName))
-                ? " (a class implements an ICellPhysics from another AcPhys.Spec version than this tool's)"
+                ? " (a class implements an ICellPhysics from another AcPhys.Contract version than this tool's)"
                 : string.Empty;
             throw new UsageException($"--impl: '{path}' has no public class implementing {typeof(ICellPhysics).FullName}{hint}");
         }

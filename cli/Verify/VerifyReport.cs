@@ -34,10 +34,10 @@ internal sealed class VerifyReport(VerifySettings settings, ICellPhysics impl)
             : $"profile {settings.Profile.Name}: {Fmt.Count(settings.Profile.CasesPerInvariant)} generated cases per invariant"
                 + (settings.Profile.Exhaustive ? " + exhaustive sweeps" : string.Empty);
         Terminal.Line($"verify: {count} invariant{(count == 1 ? string.Empty : "s")} against {impl.Name}; {budget}");
-        if (impl.Ops != Op.All)
+        if ((Op.All & ~impl.Ops) != Op.None)
         {
             // A partial implementation: say up front what it offers; invariants needing the rest are NOT TESTED.
-            Terminal.Line($"capabilities: offers {string.Join(", ", OpNames.Names(impl.Ops))}; lacks {string.Join(", ", OpNames.Names(Op.Every & ~impl.Ops))}");
+            Terminal.Line($"capabilities: offers {string.Join(", ", OpNames.Names(impl.Ops))}; lacks {string.Join(", ", OpNames.Names(Op.All & ~impl.Ops))}");
         }
 
         if (settings.Fault is not null)
@@ -195,7 +195,7 @@ internal sealed class VerifyReport(VerifySettings settings, ICellPhysics impl)
         if (unknown.Count > 0)
         {
             var run = new GateRun(impl.Name, settings, [], details, TimeSpan.Zero) { UnknownOps = unknown };
-            Terminal.Error("verify", $"warning: the implementation announced ops protocol v1 does not know: {run.UnknownOpsText} (ignored; known: {string.Join(", ", OpNames.Names(Op.Every))})");
+            Terminal.Error("verify", $"warning: the implementation announced ops protocol v1 does not know: {run.UnknownOpsText} (ignored; known: {string.Join(", ", OpNames.Names(Op.All | Op.LoadScene | Op.DatRecords | Op.FindCellWalk))})");
         }
     }
 

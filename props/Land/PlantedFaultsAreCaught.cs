@@ -9,7 +9,7 @@ namespace AcPhys.Props.Land;
 
 /// <summary>
 /// Proof that every invariant bites: each catches at least one planted fault. That every fault is caught by the
-/// invariants it names is checked per known-bug catalogue entry (props/Mutation/KnownBugCatalogueTests.cs). The exact
+/// invariants it names is checked per known-bug catalogue entry (props/Bite/KnownBugCatalogueTests.cs). The exact
 /// indoor invariants also count their concrete bites with test adapters (props/Indoor/ExactBites.cs).
 /// </summary>
 public sealed class PlantedFaultsAreCaught(ITestOutputHelper output)

@@ -18,7 +18,7 @@ internal sealed class FaultyPhysics : ICellPhysics
 
     public string Name => "reference+" + string.Join("+", faults.Select(f => f.Id));
 
-    public Op Ops => Op.All;
+    public Op Ops => Op.OpenLand;
 
     // no-hysteresis declares the current-first policy but implements the retail rule.
     public PickPolicy Pick => Is(PlantedFaults.NoHysteresis) ? PickPolicy.CurrentFirst : PickPolicy.Retail;

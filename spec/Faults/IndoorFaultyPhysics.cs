@@ -20,7 +20,7 @@ internal sealed class IndoorFaultyPhysics(PlantedFault fault) : ICellPhysics
 
     public string Name => "reference+" + fault.Id;
 
-    public Op Ops => Op.All | Op.FindCellScene | Op.FindCellTransition;
+    public Op Ops => Op.All;
 
     public PickPolicy Pick => fault == IndoorFaults.NoHysteresisIndoor ? PickPolicy.CurrentFirst : PickPolicy.Retail;
 

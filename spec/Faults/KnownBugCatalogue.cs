@@ -4,9 +4,11 @@ namespace AcPhys.Spec.Faults;
 
 /// <summary>
 /// The known-bug catalogue: the JSON files of mutation/known-bugs/, embedded in this assembly at build time, so the
-/// CLI and the tests read the same entries from anywhere. Format (docs/bite.md): one object per file with
-/// <c>format</c> = "acphys-known-bug", <c>id</c> (= the file name), <c>title</c>, <c>story</c>, <c>source</c>,
-/// <c>fault</c>, <c>caughtBy</c> (array) and optionally <c>pendingOn</c>.
+/// CLI and the tests read the same entries from anywhere. An entry is derived from its planted fault
+/// (<see cref="PlantedFaults"/>): a file says only what the fault does not (docs/bite.md). Format: one object per file
+/// with <c>format</c> = "acphys-known-bug", <c>id</c> (= the file name), <c>source</c>, and optionally <c>fault</c>
+/// (default: the id), <c>title</c> (default: the fault's, sentence-cased), <c>story</c> (default: the fault's) and
+/// <c>pendingOn</c>. The invariants expected to catch it are always the fault's <see cref="PlantedFault.CaughtBy"/>.
 /// </summary>
 public static class KnownBugCatalogue
 {
@@ -17,7 +19,7 @@ public static class KnownBugCatalogue
 
     private static readonly Lazy<IReadOnlyList<KnownBug>> Entries = new(Load);
 
-    private static readonly HashSet<string> Fields = ["format", "id", "title", "story", "source", "fault", "caughtBy", "pendingOn"];
+    private static readonly HashSet<string> Fields = ["format", "id", "title", "story", "source", "fault", "pendingOn"];
 
     /// <summary>Gets every entry, ordered by id.</summary>
     /// <exception cref="FormatException">An embedded file is malformed (the message names it).</exception>
@@ -55,15 +57,12 @@ public static class KnownBugCatalogue
                 throw Bad(fileName, $"id \"{id}\" must equal the file name without .json");
             }
 
-            if (!root.TryGetProperty("caughtBy", out var catchers) || catchers.ValueKind != JsonValueKind.Array || catchers.GetArrayLength() == 0)
+            if (root.TryGetProperty("caughtBy", out _))
             {
-                throw Bad(fileName, "caughtBy must be a non-empty array of invariant IDs");
+                // Derived, never restated: a copy could drift from the fault the bite runs (issue 25).
+                throw Bad(fileName, "caughtBy is not a field: the catchers are the planted fault's CaughtBy (spec/Faults); remove it");
             }
 
-            var caughtBy = catchers.EnumerateArray().Select(e => e.ValueKind == JsonValueKind.String && e.GetString() is { Length: > 0 } s
-                ? s
-                : throw Bad(fileName, "caughtBy must hold invariant IDs (strings)")).ToArray();
-            string? pendingOn = root.TryGetProperty("pendingOn", out _) ? Text(root, "pendingOn", fileName) : null;
             foreach (var field in root.EnumerateObject())
             {
                 if (!Fields.Contains(field.Name))
@@ -72,7 +71,12 @@ public static class KnownBugCatalogue
                 }
             }
 
-            return new KnownBug(id, Text(root, "title", fileName), Text(root, "story", fileName), Text(root, "source", fileName), Text(root, "fault", fileName), caughtBy, pendingOn);
+            string faultId = root.TryGetProperty("fault", out _) ? Text(root, "fault", fileName) : id;
+            var fault = PlantedFaults.Find(faultId);
+            string? pendingOn = root.TryGetProperty("pendingOn", out _) ? Text(root, "pendingOn", fileName) : null;
+            string title = Own(root, "title", fileName, fault is null ? null : SentenceCase(fault.Title));
+            string story = Own(root, "story", fileName, fault?.Story);
+            return new KnownBug(id, title, story, Text(root, "source", fileName), faultId, fault?.CaughtBy ?? [], pendingOn);
         }
         catch (JsonException e)
         {
@@ -98,6 +102,12 @@ public static class KnownBugCatalogue
         root.TryGetProperty(field, out var v) && v.ValueKind == JsonValueKind.String && v.GetString() is { Length: > 0 } s
             ? s
             : throw Bad(fileName, $"{field} must be a non-empty string");
+
+    /// <summary>The entry's own text for a field, or the fault's when the file leaves it out (required when there is no fault yet).</summary>
+    private static string Own(JsonElement root, string field, string fileName, string? fromFault) =>
+        root.TryGetProperty(field, out _) || fromFault is null ? Text(root, field, fileName) : fromFault;
+
+    private static string SentenceCase(string s) => s.Length == 0 ? s : char.ToUpperInvariant(s[0]) + s[1..];
 
     private static FormatException Bad(string fileName, string message) => new($"known-bug catalogue, {fileName}: {message}");
 }

@@ -95,7 +95,7 @@ public static class OutdoorGens
         if (inCell < 0)
         {
             // v is a tiny negative (−1 ULP of 0): v / 24 underflows to −0, so the floor misses the cell west of the line.
-            // Its in-cell coordinate 24 + v rounds to 24; a negative radius (−1.4e-45) is no body (spec/Values/SphereRadius).
+            // Its in-cell coordinate 24 + v rounds to 24; a negative radius (−1.4e-45) is no body (formats/Values/SphereRadius).
             inCell += 24f;
         }
 

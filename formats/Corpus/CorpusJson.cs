@@ -291,7 +291,7 @@ public static class CorpusJson
         }
     }
 
-    /// <summary>Refuses a value the shared rules (spec/Values) found a problem with.</summary>
+    /// <summary>Refuses a value the shared rules (formats/Values) found a problem with.</summary>
     internal static void Refuse(string? problem, string source, string path)
     {
         if (problem is not null)

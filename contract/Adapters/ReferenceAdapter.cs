@@ -28,7 +28,7 @@ public sealed class ReferenceAdapter(PickPolicy pick = PickPolicy.Retail, PartsF
         + (Indoor == default ? string.Empty : "+indoor" + Indoor.ToString()[nameof(IndoorFidelity).Length..]) + (Volumes == VolumeMode.Aabb ? "+aabb" : string.Empty);
 
     /// <inheritdoc/>
-    public Op Ops => Op.All | Op.FindCellScene | Op.FindCellTransition;
+    public Op Ops => Op.All;
 
     /// <inheritdoc/>
     public OutdoorFidelity Outdoor => outdoor;

@@ -61,11 +61,14 @@ public enum Op
     /// <summary>Every LandDefs operation.</summary>
     LandDefs = BlockIdToLcoord | GidToLcoord | LcoordToGid | InboundValidCellId | GetOutsideLcoord | AdjustToOutside,
 
-    /// <summary>Every operation of protocol v1 on open land.</summary>
-    All = LandDefs | OutsideCells | FindCell | OutsideCellsParts,
+    /// <summary>Every operation of protocol v1 on open land (no scene).</summary>
+    OpenLand = LandDefs | OutsideCells | FindCell | OutsideCellsParts,
 
-    /// <summary>Every operation an invariant may need: <see cref="All"/> and scenes.</summary>
-    Every = All | FindCellScene | FindCellTransition,
+    /// <summary>
+    /// Every operation: <see cref="OpenLand"/> and scenes, all an invariant may need. <see cref="LoadScene"/>,
+    /// <see cref="DatRecords"/> and <see cref="FindCellWalk"/> are transports, not operations, so they are not in it.
+    /// </summary>
+    All = OpenLand | FindCellScene | FindCellTransition,
 }
 
 /// <summary>Protocol names of <see cref="Op"/> values.</summary>

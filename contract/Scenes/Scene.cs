@@ -54,7 +54,7 @@ public sealed record SceneBuilding(LandblockId Block, Vector3 Origin, IReadOnlyL
 
 /// <summary>
 /// A scene: only what a test needs. Loaded landblocks (any other block is unloaded), declared-but-unloaded blocks and
-/// env cells (portals may point at them: load hints), buildings and env cells. Serialised by <see cref="SceneJson"/>.
+/// env cells (portals may point at them: load hints), buildings and env cells. Serialised by <c>SceneJson</c> (AcPhys.Formats).
 /// </summary>
 /// <param name="Blocks">Loaded landblocks.</param>
 /// <param name="Buildings">Buildings.</param>

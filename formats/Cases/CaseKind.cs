@@ -1,6 +1,6 @@
 namespace AcPhys.Spec.Cases;
 
-/// <summary>The kinds of case (<see cref="AnyCase"/>); each has one codec and one set of judges (<see cref="Judging.Judges"/>).</summary>
+/// <summary>The kinds of case (<see cref="AnyCase"/>); each has one codec and one set of judges (<c>Judges</c>).</summary>
 public enum CaseKind
 {
     /// <summary>One LandDefs input (<see cref="LandCase"/>), file kind <c>land</c>.</summary>

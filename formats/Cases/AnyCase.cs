@@ -1,7 +1,7 @@
 namespace AcPhys.Spec.Cases;
 
 /// <summary>
-/// One case of any kind, as runners report it, files store it and the judge (<see cref="Judging.Judges"/>) judges it: a
+/// One case of any kind, as runners report it, files store it and the judge (<c>Judges</c>) judges it: a
 /// closed set, one subtype per <see cref="CaseKind"/>, so a switch over it is checked for completeness.
 /// </summary>
 /// <remarks>Immutable.</remarks>
