@@ -38,7 +38,7 @@ public sealed class OutOfProcessTests
         var run = Acphys.Run(["verify", "--impl-cmd", Acphys.ServeCommand + " --fault outdoor-wins", "--only", "INTERIOR-WINS", "--cases", "300", "--timeout", "60"]);
         Assert.True(run.Exit == 1, run.ToString());
         Assert.Contains("FAIL INTERIOR-WINS on reference+outdoor-wins", run.Out, StringComparison.Ordinal);
-        Assert.Contains("  shrunk     cottage-1", run.Out, StringComparison.Ordinal);
+        Assert.Matches(@"  shrunk     (cottage|estate-\w+)-1 ", run.Out); // shrunk to a one-room scene (which kind depends on the case stream)
     }
 
     [Fact]

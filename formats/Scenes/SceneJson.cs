@@ -280,7 +280,10 @@ public static class SceneJson
                 {
                     // A building portal names one of its cell's portals, or carries retail's invalid marker 0xFFFF
                     // (facts §5, EnvTransit; generated "invalid doors"); issue 28: portal 99 of a 2-portal cell was accepted.
-                    r.Require(b.Portals[p].Portal < target.Portals.Count, $"{at0}.portals[{p}].portal", $"cell {id} has {target.Portals.Count} portals (0..{target.Portals.Count - 1}, or 65535 for none), not portal {b.Portals[p].Portal}");
+                    // A cell with no portals (a sealed closet entered only by its building portal) is named by portal 0:
+                    // the sphere path never reads the index beyond the 0xFFFF test (facts §5.3).
+                    int count = Math.Max(1, target.Portals.Count);
+                    r.Require(b.Portals[p].Portal < count, $"{at0}.portals[{p}].portal", $"cell {id} has {target.Portals.Count} portals (0..{count - 1}, or 65535 for none), not portal {b.Portals[p].Portal}");
                 }
             }
         }
