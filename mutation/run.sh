@@ -4,8 +4,10 @@
 #   bash mutation/run.sh                    full run; publishes reports to mutation/reports/
 #   bash mutation/run.sh --since:main       only mutants in files changed since main (PR use)
 #   bash mutation/run.sh -m "**/LandDefs.cs" only one file
+#   bash mutation/run.sh --shard K/N        shard K (0-based) of N: the files `python3 mutation/shard.py files K N`
+#                                           deals it; merge the shards' reports with `shard.py merge` (nightly)
 #
-# Any argument is passed to dotnet-stryker. A run with arguments is partial: its reports stay in
+# Any other argument is passed to dotnet-stryker. A run with arguments is partial: its reports stay in
 # mutation/StrykerOutput/<stamp>/ and mutation/reports/ (the committed full-run reports) is left alone.
 #
 # Stryker runs in a private copy of the working tree (tracked + untracked-not-ignored files and .git),
@@ -28,6 +30,26 @@ config="$root/mutation/stryker-config.json"
 start=$(date +%s)
 
 cd "$root"
+
+# --shard K/N: this shard's files as Stryker mutate patterns (a partial run; the merge applies the threshold).
+shard=""
+if [ "${1:-}" = "--shard" ]; then
+    spec="${2:-}"
+    if ! [[ "$spec" =~ ^([0-9]+)/([0-9]+)$ ]]; then
+        echo "mutation: --shard needs K/N (0 <= K < N), got '${spec}'" >&2
+        exit 2
+    fi
+    shift 2
+    files="$(python3 "$root/mutation/shard.py" files "${BASH_REMATCH[1]}" "${BASH_REMATCH[2]}")" || exit 2
+    shard="$spec"
+    args=()
+    # Patterns relative to core/ (the mutated project), "**/"-rooted as in the config; no two core files share a
+    # path suffix, and the merge refuses overlapping shards if that ever changes.
+    while IFS= read -r f; do [ -n "$f" ] && args+=(-m "**/${f#core/}"); done <<< "$files"
+    set -- "${args[@]}" "$@"
+    echo "mutation: shard $shard: $(( ${#args[@]} / 2 )) files: $(tr '\n' ' ' <<< "$files")"
+fi
+
 dotnet tool restore >/dev/null
 
 export ACPHYS_PROFILE=mutation
@@ -39,6 +61,15 @@ stamp="$(date -u +%Y%m%dT%H%M%SZ)"
 out="$root/mutation/StrykerOutput/$stamp"
 mkdir -p "$out"
 log="$out/stryker.log"
+
+if [ -n "$shard" ] && [ -z "$files" ]; then
+    # More shards than weighted files: nothing to mutate here (without -m Stryker would mutate all of core).
+    mkdir -p "$out/reports"
+    printf '{"schemaVersion":"2","thresholds":{"high":0,"low":0},"files":{}}\n' > "$out/reports/mutation-report.json"
+    echo "mutation: shard $shard has no files"
+    echo "mutation: shard $shard report: $out/reports/mutation-report.json"
+    exit 0
+fi
 
 # --- private copy of the tree -------------------------------------------------------------------
 work="$(mktemp -d "${TMPDIR:-/tmp}/acphys-mutation.XXXXXX")"
@@ -123,6 +154,11 @@ echo "mutation: runtime ${elapsed} s on $(nproc) cores; break threshold ${break_
 if [ "$stryker_rc" -ne 0 ]; then
     echo "mutation: FAILED: stryker exited $stryker_rc" >&2
     exit "$stryker_rc"
+fi
+if [ -n "$shard" ]; then
+    # A shard's score says little alone: the merged report is judged (python3 mutation/shard.py merge).
+    echo "mutation: shard $shard report: $json"
+    exit 0
 fi
 if python3 -c 'import sys; sys.exit(0 if float(sys.argv[1]) >= float(sys.argv[2]) else 1)' "$score" "$break_at"; then
     echo "mutation: OK (${score} % >= ${break_at} %)"

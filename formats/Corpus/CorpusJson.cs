@@ -224,6 +224,17 @@ public static class CorpusJson
         return Read(text, path);
     }
 
+    /// <summary>Writes one sphere as <c>{"x","y","z","r"}</c>: a query's sphere (centre) or a walk's body sphere (offset).</summary>
+    internal static void WriteBall(Utf8JsonWriter w, System.Numerics.Vector3 at, float radius)
+    {
+        w.WriteStartObject();
+        WriteFloat(w, "x", at.X);
+        WriteFloat(w, "y", at.Y);
+        WriteFloat(w, "z", at.Z);
+        WriteFloat(w, "r", radius);
+        w.WriteEndObject();
+    }
+
     internal static void WriteFloat(Utf8JsonWriter w, string name, float value)
     {
         if (float.IsFinite(value))

@@ -28,12 +28,7 @@ public static class QueryJson
         w.WriteStartArray("spheres");
         foreach (var s in q.Spheres)
         {
-            w.WriteStartObject();
-            CorpusJson.WriteFloat(w, "x", s.Center.X);
-            CorpusJson.WriteFloat(w, "y", s.Center.Y);
-            CorpusJson.WriteFloat(w, "z", s.Center.Z);
-            CorpusJson.WriteFloat(w, "r", s.Radius);
-            w.WriteEndObject();
+            CorpusJson.WriteBall(w, s.Center, s.Radius);
         }
 
         w.WriteEndArray();

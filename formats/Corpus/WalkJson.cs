@@ -29,12 +29,7 @@ public static class WalkJson
         w.WriteStartArray("body");
         foreach (var b in walk.Body)
         {
-            w.WriteStartObject();
-            CorpusJson.WriteFloat(w, "x", b.Offset.X);
-            CorpusJson.WriteFloat(w, "y", b.Offset.Y);
-            CorpusJson.WriteFloat(w, "z", b.Offset.Z);
-            CorpusJson.WriteFloat(w, "r", b.Radius);
-            w.WriteEndObject();
+            CorpusJson.WriteBall(w, b.Offset, b.Radius);
         }
 
         w.WriteEndArray();
