@@ -18,6 +18,7 @@ public sealed class UndeclaredDeviationTests
     [InlineData("--fidelity ace-load-hint-low-key")]
     [InlineData("--fidelity ace-no-portal-guard")]
     [InlineData("--fidelity reframe-transit")]
+    [InlineData("--fidelity ace-transition-filter")]
     [InlineData("--pick current-first")]
     public void UndeclaredDeviationFails(string mode)
     {
