@@ -59,21 +59,29 @@ public sealed class MutationShardTests
     }
 
     [RequiresPythonFact]
-    public void MergeRefusesOverlappingOrIncompleteShards()
+    public void MergeRefusesARepeatedMissingOrUnstampedShard()
     {
         string dir = Temp();
-        var reports = WriteShards(dir, 2, file => ["Killed"]);
-        string first = CoreFiles()[0];
-        bool firstInShard0 = Deal(2)[0].Contains(first);
+        var reports = WriteShards(dir, 3, file => ["Killed"]);
+        string outDir = Path.Combine(dir, "out");
 
-        var twice = Python(["merge", Path.Combine(dir, "out"), reports[0], reports[1], reports[0]]);
+        var twice = Python(["merge", outDir, reports[0], reports[1], reports[2], reports[0]]);
         Assert.True(twice.Exit == 2, twice.Output);
-        Assert.Contains(" is in two reports: ", twice.Output, StringComparison.Ordinal);
+        Assert.Contains("shard 0 of 3 twice", twice.Output, StringComparison.Ordinal);
 
-        var missing = Python(["merge", Path.Combine(dir, "out"), reports[firstInShard0 ? 1 : 0]]);
+        var missing = Python(["merge", outDir, reports[0], reports[2]]);
         Assert.True(missing.Exit == 2, missing.Output);
-        Assert.Contains("no shard mutated " + first, missing.Output, StringComparison.Ordinal);
-        Assert.False(File.Exists(Path.Combine(dir, "out", "mutation-report.json")), "a refused merge wrote a report");
+        Assert.Contains("no report of shard 1 of 3", missing.Output, StringComparison.Ordinal);
+
+        string plain = Path.Combine(dir, "plain.json");
+        var node = JsonNode.Parse(File.ReadAllText(reports[1]))!.AsObject();
+        node.Remove("acphysShard");
+        File.WriteAllText(plain, node.ToJsonString());
+        var unstamped = Python(["merge", outDir, reports[0], plain, reports[2]]);
+        Assert.True(unstamped.Exit == 2, unstamped.Output);
+        Assert.Contains("is not a shard's report", unstamped.Output, StringComparison.Ordinal);
+
+        Assert.False(File.Exists(Path.Combine(outDir, "mutation-report.json")), "a refused merge wrote a report");
     }
 
     [RequiresPythonFact]
@@ -88,18 +96,23 @@ public sealed class MutationShardTests
         }
     }
 
+    /// <summary>
+    /// Writes n shard reports as run.sh --shard leaves them: Stryker lists every core file in every report, so a file a
+    /// shard does not own carries decoy mutants (all "Survived": a merge that took them would score lower).
+    /// </summary>
     private static string[] WriteShards(string dir, int n, Func<string, string[]> statuses)
     {
         var paths = new string[n];
         var shards = Deal(n);
+        var core = CoreFiles();
         for (int k = 0; k < n; k++)
         {
             var files = new JsonObject();
-            foreach (string file in shards[k])
+            foreach (string file in core)
             {
                 var mutants = new JsonArray();
                 int id = 0;
-                foreach (string status in statuses(file))
+                foreach (string status in shards[k].Contains(file) ? statuses(file) : ["Survived", "Survived", "Survived"])
                 {
                     mutants.Add(new JsonObject { ["id"] = (id++).ToString(System.Globalization.CultureInfo.InvariantCulture), ["status"] = status });
                 }
@@ -109,6 +122,8 @@ public sealed class MutationShardTests
 
             paths[k] = Path.Combine(dir, $"shard-{k}.json");
             File.WriteAllText(paths[k], new JsonObject { ["schemaVersion"] = "2", ["thresholds"] = new JsonObject { ["high"] = 97, ["low"] = 95 }, ["files"] = files }.ToJsonString());
+            var stamp = Python(["stamp", paths[k], k.ToString(System.Globalization.CultureInfo.InvariantCulture), n.ToString(System.Globalization.CultureInfo.InvariantCulture)]);
+            Assert.True(stamp.Exit == 0, stamp.Output);
         }
 
         return paths;

@@ -66,6 +66,7 @@ if [ -n "$shard" ] && [ -z "$files" ]; then
     # More shards than weighted files: nothing to mutate here (without -m Stryker would mutate all of core).
     mkdir -p "$out/reports"
     printf '{"schemaVersion":"2","thresholds":{"high":0,"low":0},"files":{}}\n' > "$out/reports/mutation-report.json"
+    python3 "$root/mutation/shard.py" stamp "$out/reports/mutation-report.json" "${shard%/*}" "${shard#*/}"
     echo "mutation: shard $shard has no files"
     echo "mutation: shard $shard report: $out/reports/mutation-report.json"
     exit 0
@@ -157,6 +158,7 @@ if [ "$stryker_rc" -ne 0 ]; then
 fi
 if [ -n "$shard" ]; then
     # A shard's score says little alone: the merged report is judged (python3 mutation/shard.py merge).
+    python3 "$root/mutation/shard.py" stamp "$json" "${shard%/*}" "${shard#*/}"
     echo "mutation: shard $shard report: $json"
     exit 0
 fi

@@ -4,6 +4,7 @@
     python3 mutation/shard.py files K N          the core files of shard K (0-based) of N, one per line
     python3 mutation/shard.py deal N             every shard's files: "K<tab>file" lines
     python3 mutation/shard.py weights N          files and weight per shard
+    python3 mutation/shard.py stamp REPORT K N   marks a shard's report with its shard and files (run.sh does)
     python3 mutation/shard.py merge OUT REPORT...  one report from the shards' mutation-report.json files
 
 A full run of all of core takes about 1 h 40 min on 2 cores (docs/mutation.md), so the nightly workflow runs it as N
@@ -13,7 +14,9 @@ weight, largest first, each to the lightest shard so far; a file's weight is its
 non-compiling mutants left out), or its line count for a file that report does not know. The deal depends only
 on the tree, so every shard of one run sees the same deal.
 
-merge refuses reports that overlap (a file in two shards) or that miss a core file, writes OUT/mutation-report.json
+A partial Stryker run still reports every file of the project (the ones it did not mutate with "Ignored" mutants), so
+each shard's report is stamped with its shard and files, and merge takes every file from its owner. merge refuses a
+shard given twice, a missing shard, shards of different N, and a deal that misses a core file; it writes OUT/mutation-report.json
 and OUT/mutation-report.md, prints the merged score, and exits 3 when the score is below the break threshold of
 mutation/stryker-config.json (the threshold a single full run applies), 2 on bad input.
 """
@@ -95,11 +98,27 @@ def score_of(c):
     return 100.0 * sum(c.get(s, 0) for s in DETECTED) / valid if valid else 0.0
 
 
+def stamp(path, k, n):
+    """Records in a shard's report which shard it is and which files it owns (run.sh --shard calls this).
+
+    Stryker's report of a partial run still lists every file of the project, the ones outside the run with their
+    mutants "Ignored", so the merge takes each file from the shard that owns it, not from whichever report has it."""
+    shards, _ = deal(core_files(), n)
+    try:
+        with open(path, encoding="utf-8") as f:
+            report = json.load(f)
+    except (OSError, ValueError) as e:
+        raise Refused(f"stamp: cannot read {path}: {e}")
+    report["acphysShard"] = {"shard": k, "of": n, "files": shards[k]}
+    write_atomically(path, json.dumps(report))
+
+
 def merge(out_dir, paths):
     if not paths:
         raise Refused("merge: no reports given")
     merged = None
-    owner = {}
+    by_shard = {}
+    n = None
     for path in paths:
         try:
             with open(path, encoding="utf-8") as f:
@@ -108,17 +127,29 @@ def merge(out_dir, paths):
             raise Refused(f"merge: cannot read {path}: {e}")
         if not isinstance(report, dict) or not isinstance(report.get("files"), dict):
             raise Refused(f"merge: {path} is not a Stryker JSON report (no 'files' object)")
+        own = report.get("acphysShard")
+        if not isinstance(own, dict) or not {"shard", "of", "files"} <= own.keys():
+            raise Refused(f"merge: {path} is not a shard's report (no 'acphysShard': written by run.sh --shard)")
+        if n is None:
+            n = own["of"]
+        elif own["of"] != n:
+            raise Refused(f"merge: {path} is shard {own['shard']} of {own['of']}, the others are of {n}")
+        if own["shard"] in by_shard:
+            raise Refused(f"merge: shard {own['shard']} of {n} twice: {by_shard[own['shard']]} and {path}")
+        by_shard[own["shard"]] = path
         if merged is None:
-            merged = {k: v for k, v in report.items() if k != "files"}
+            merged = {k: v for k, v in report.items() if k not in ("files", "acphysShard")}
             merged["files"] = {}
-        for name, entry in report["files"].items():
-            if name in owner:
-                raise Refused(f"merge: {name} is in two reports: {owner[name]} and {path}")
-            owner[name] = path
-            merged["files"][name] = entry
+        for name in own["files"]:
+            if name not in report["files"]:
+                raise Refused(f"merge: shard {own['shard']}'s report has no entry for its file {name} ({path})")
+            merged["files"][name] = report["files"][name]
+    missing_shards = [k for k in range(n) if k not in by_shard]
+    if missing_shards:
+        raise Refused(f"merge: no report of shard {', '.join(map(str, missing_shards))} of {n}")
     missing = [f for f in core_files() if f not in merged["files"]]
     if missing:
-        raise Refused("merge: no shard mutated " + ", ".join(missing))
+        raise Refused("merge: no shard mutated " + ", ".join(missing) + " (core changed since the shards were dealt?)")
 
     c = counts(merged)
     score = score_of(c)
@@ -183,9 +214,13 @@ def main(argv):
             for k in range(n):
                 print(f"shard {k}/{n}: {len(shards[k])} files, weight {load[k]}")
             return 0
+        if len(argv) == 5 and argv[1] == "stamp":
+            k, n = parse_shard(argv[3], argv[4])
+            stamp(argv[2], k, n)
+            return 0
         if len(argv) >= 3 and argv[1] == "merge":
             return merge(argv[2], argv[3:])
-        raise Refused("usage: shard.py files K N | shard.py deal N | shard.py weights N | shard.py merge OUT REPORT...")
+        raise Refused("usage: shard.py files K N | deal N | weights N | stamp REPORT K N | merge OUT REPORT...")
     except Refused as e:
         print(f"mutation: {e}", file=sys.stderr)
         return 2
