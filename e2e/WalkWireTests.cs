@@ -113,7 +113,7 @@ public sealed class WalkWireTests
         Assert.True(clean.Exit == 0, clean.ToString());
         Assert.DoesNotContain("find_cell_walk", clean.Out, StringComparison.Ordinal);
         var old = Acphys.Run(["verify", "--impl-cmd", Acphys.PythonExample + " --bug clamp-106 --ops " + OldOps, .. only]);
-        var now = Acphys.Run(["verify", "--impl-cmd", Acphys.PythonExample + " --bug clamp-106", .. only]);
+        var now = Acphys.Run(["verify", "--impl-cmd", Acphys.PythonExample + " --bug clamp-106 --ops " + OldOps + ",find_cell_walk", .. only]);
         Assert.True(old.Exit == 1 && now.Exit == 1, old + "\n" + now);
         static string[] Failed(Run r) => [.. r.Out.Split('\n').Where(l => l.StartsWith("FAIL ", StringComparison.Ordinal)).Select(l => l.Trim()).Order(StringComparer.Ordinal)];
         Assert.Contains("FAIL NO-BOUNDARY-FREEZE on python-example+clamp-106", Failed(old));

@@ -3,8 +3,9 @@
 
 Standard library only. It reads one JSON request per line on stdin and answers one JSON object per line on stdout,
 in order (docs/protocol.md); logs go to stderr. It offers the LandDefs ops, outside_cells and find_cell on open land
-with the retail pick, written from the facts specification (../shared/spec/retail-cell-physics-facts.md, cited as
-"facts §x"), not from the C# core.
+with the retail pick, and find_cell in scenes (the indoor half, in acphys_indoor.py beside this file: env cells,
+portals, buildings, static placement and movement transitions), written from the facts specification
+(../shared/spec/retail-cell-physics-facts.md, cited as "facts §x"), not from the C# core.
 
 Run it under the suite:
 
@@ -14,6 +15,7 @@ Seeded bugs, to see the suite catch a defect through the process protocol (--bug
 
     clamp-106    candidates and the containing pick clamped to the position's landblock (acdream #106)
     trunc-floor  get_outside_lcoord truncates x/24 toward zero instead of flooring (facts §6.2)
+    portal-side-inverted  a portal's PortalSide read backwards when adding a load hint (facts §5.4)
 
 --ops NAME[,NAME...] announces only some ops (a partial implementation: the rest is reported as not tested). Without
 find_cell_walk among them the tool sends walks one find_cell per step, as to an implementation written before the op.
@@ -26,14 +28,17 @@ import os
 import struct
 import sys
 
+import acphys_indoor
+
 PROTOCOL = 1
 LAND_LENGTH = 2040          # lcoords per map side (facts §1.3)
 CELL_LENGTH = 24.0          # metres per land cell side
 BLOCK_LENGTH = 192.0        # metres per landblock side
 EPSILON = struct.unpack("<f", struct.pack("<f", 0.0002))[0]   # facts §1.5, the float32 value of 0.0002f
 ALL_OPS = ["blockid_to_lcoord", "gid_to_lcoord", "lcoord_to_gid", "inbound_valid_cellid",
-           "get_outside_lcoord", "adjust_to_outside", "outside_cells", "find_cell", "find_cell_walk"]
-BUGS = ("clamp-106", "trunc-floor")
+           "get_outside_lcoord", "adjust_to_outside", "outside_cells", "find_cell", "find_cell_walk",
+           "find_cell_scene", "find_cell_transition", "load_scene"]
+BUGS = ("clamp-106", "trunc-floor", "portal-side-inverted")
 
 
 class BadRequest(Exception):
@@ -271,12 +276,13 @@ def find_cell(position, spheres, origin=(0.0, 0.0)):
     return cells, containing
 
 
-def find_cell_walk(cell, origin, current, body, steps):
+def find_cell_walk(cell, origin, current, body, steps, ask=None):
     """docs/protocol.md "Whole walks": the walk threaded as the tool threads it, one (cells, containing) per query.
 
     Every operation is float32, as the client's own: each move is added to the position (z + 0 too), the body's
     spheres are position + offset, and a containing cell re-frames the position by GetBlockOffset and becomes the
-    frame and the current cell; with no containing cell both are kept. (current does not change the retail pick.)"""
+    frame and the current cell; with no containing cell both are kept. (current does not change the retail pick.)
+    ask(frame, spheres) answers one query as (cells, containing, loaded flags or None); by default on open land."""
     frame = cell
     px, py, pz = origin
     answers = []
@@ -285,8 +291,8 @@ def find_cell_walk(cell, origin, current, body, steps):
             dx, dy = steps[i - 1]
             px, py, pz = f32(px + dx), f32(py + dy), f32(pz + 0.0)
         spheres = [(f32(px + ox), f32(py + oy), f32(pz + oz), r) for (ox, oy, oz, r) in body]
-        cells, containing = find_cell(frame, spheres, (px, py))
-        answers.append((cells, containing))
+        cells, containing, loaded = ask(frame, spheres) if ask else find_cell(frame, spheres, (px, py)) + (None,)
+        answers.append(cell_answer(cells, containing, loaded))
         if containing:
             px = f32(px - BLOCK_LENGTH * (block_x(containing) - block_x(frame)))
             py = f32(py - BLOCK_LENGTH * (block_y(containing) - block_y(frame)))
@@ -295,6 +301,13 @@ def find_cell_walk(cell, origin, current, body, steps):
 
 
 # ---- the protocol --------------------------------------------------------------------------------------------------
+
+def cell_answer(cells, containing, loaded=None):
+    reply = {"cells": [cell_text(c) for c in cells], "containing": cell_text(containing) if containing else None}
+    if loaded is not None:
+        reply["loaded"] = loaded
+    return reply
+
 
 def lcoord_answer(lc):
     return {"ok": lc is not None, "x": lc[0] if lc else 0, "y": lc[1] if lc else 0}
@@ -307,7 +320,7 @@ def answer(request, ops):
             return {"error": "only protocol %d is spoken here" % PROTOCOL}
         name = "python-example" + ("+" + BUG if BUG else "")
         return {"protocol": PROTOCOL, "name": name, "ops": ops, "pick": "retail"}
-    if op not in ops:
+    if op not in ops and not (op == "unload_scene" and "load_scene" in ops):
         return {"error": "op %r not offered" % (op,)}
     if op == "blockid_to_lcoord":
         return lcoord_answer(blockid_to_lcoord(read_cell(request["cell"])))
@@ -326,14 +339,21 @@ def answer(request, ops):
     if op == "outside_cells":
         cells = outside_cells(read_cell(request["cell"]), read_spheres(request["spheres"]), read_origin(request))
         return {"cells": [cell_text(c) for c in cells]}
+    if op == "load_scene":
+        return SCENES.load(request)
+    if op == "unload_scene":
+        return SCENES.unload(request)
+    scene = SCENES.of(request) if op in ("find_cell", "find_cell_walk") else None
+    transition = request.get("load_cells") is True
+    if scene is not None and ("find_cell_scene" not in ops or (transition and "find_cell_transition" not in ops)):
+        return {"error": "scenes not offered (--ops)"}
     if op == "find_cell":
-        if request.get("scene") is not None:
-            return {"error": "scenes not supported (open land only)"}
-        cells, containing = find_cell(read_cell(request["cell"]), read_spheres(request["spheres"]), read_origin(request))
-        return {"cells": [cell_text(c) for c in cells], "containing": cell_text(containing) if containing else None}
+        cell, spheres = read_cell(request["cell"]), read_spheres(request["spheres"])
+        if scene is not None:
+            return cell_answer(*scene.find_cell_list(cell, spheres, transition))
+        return cell_answer(*find_cell(cell, spheres, read_origin(request)))
     if op == "find_cell_walk":
-        if request.get("scene") is not None or "scene_id" in request:
-            return {"error": "scenes not supported (open land only)"}
+        ask = (lambda frame, spheres: scene.find_cell_list(frame, spheres, transition)) if scene is not None else None
         o = request["origin"]
         if not isinstance(o, dict):
             raise BadRequest("origin must be an object {x, y, z}")
@@ -343,14 +363,13 @@ def answer(request, ops):
         current = request.get("current")
         answers = find_cell_walk(read_cell(request["cell"]), (read_float(o["x"]), read_float(o["y"]), read_float(o["z"])),
                                  read_cell(current) if current is not None else 0, read_spheres(request["body"]),
-                                 [(read_float(d["x"]), read_float(d["y"])) for d in steps])
-        return {"steps": [{"cells": [cell_text(c) for c in cells], "containing": cell_text(containing) if containing else None}
-                          for (cells, containing) in answers]}
+                                 [(read_float(d["x"]), read_float(d["y"])) for d in steps], ask)
+        return {"steps": answers}
     return {"error": "op %r not implemented" % (op,)}
 
 
 def main():
-    global BUG
+    global BUG, SCENES
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--bug", choices=BUGS, default=os.environ.get("ACPHYS_PY_BUG") or None,
                         help="switch on a seeded bug (or set ACPHYS_PY_BUG)")
@@ -359,6 +378,8 @@ def main():
     if args.bug is not None and args.bug not in BUGS:
         parser.error("unknown bug %r (known: %s)" % (args.bug, ", ".join(BUGS)))
     BUG = args.bug
+    land = acphys_indoor.Land(outside_cells=outside_cells, contains=land_square_contains, adjust_to_outside=adjust_to_outside)
+    SCENES = acphys_indoor.Scenes(land, BUG)
     ops = ALL_OPS if not args.ops else [o for o in args.ops.split(",") if o]
 
     print("acphys_impl.py: protocol %d, ops %s%s" % (PROTOCOL, ",".join(ops), ", seeded bug " + BUG if BUG else ""),
@@ -378,6 +399,7 @@ def main():
 
 
 BUG = None
+SCENES = None
 
 if __name__ == "__main__":
     main()
