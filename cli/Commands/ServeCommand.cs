@@ -39,12 +39,29 @@ internal static class ServeCommand
         {
             Description = "Serve the --pick / --fidelity behaviour but announce retail in hello: a port deviating without declaring it (the suite must fail it; docs/facts-coverage.md).",
         };
-        var command = new Command("serve", "Serve the reference core over protocol v1 on stdin/stdout (docs/protocol.md); ends at end of input.") { fault, pick, fidelity, noLoad, noDat, noWalks, announceRetail };
-        command.SetAction(parse => Guard.Run("serve", () => Run(parse.GetValue(fault), parse.GetValue(pick), parse.GetValue(fidelity), parse.GetValue(noLoad), parse.GetValue(noDat), parse.GetValue(noWalks), parse.GetValue(announceRetail))));
+        var ops = new Option<string>("--ops")
+        {
+            Description = "Offer only these operations (comma-separated protocol names, e.g. every op but find_cell_scene: a port whose only scene query is the transition; docs/ports.md).",
+            HelpName = "OPS",
+        };
+        var command = new Command("serve", "Serve the reference core over protocol v1 on stdin/stdout (docs/protocol.md); ends at end of input.") { fault, pick, fidelity, noLoad, noDat, noWalks, announceRetail, ops };
+        command.SetAction(parse => Guard.Run("serve", () => Run(parse.GetValue(fault), parse.GetValue(pick), parse.GetValue(fidelity), parse.GetValue(noLoad), parse.GetValue(noDat), parse.GetValue(noWalks), parse.GetValue(announceRetail), parse.GetValue(ops))));
         return command;
     }
 
-    private static int Run(string? faultId, string? pickName, string? fidelityNames, bool noLoadScene, bool noDatRecords, bool noWalks, bool announceRetail)
+    // --ops: the operations kept; the transports (load_scene, dat_records, find_cell_walk) are the server's own.
+    private static Op ParseOps(string names)
+    {
+        var ops = OpNames.Parse(names.Split(',', StringSplitOptions.RemoveEmptyEntries | StringSplitOptions.TrimEntries), out var unknown);
+        if (unknown.Count > 0 || ops == Op.None)
+        {
+            throw new UsageException($"--ops: unknown or no operation '{(unknown.Count > 0 ? unknown[0] : names)}' (known: {string.Join(", ", OpNames.Names(Op.All))})");
+        }
+
+        return ops | Op.LoadScene | Op.DatRecords | Op.FindCellWalk;
+    }
+
+    private static int Run(string? faultId, string? pickName, string? fidelityNames, bool noLoadScene, bool noDatRecords, bool noWalks, bool announceRetail, string? opNames)
     {
         if (!PickNames.TryParse(pickName, out var pick))
         {
@@ -82,6 +99,11 @@ internal static class ServeCommand
         if (announceRetail)
         {
             impl = new Impl.AnnouncedRetail(impl);
+        }
+
+        if (opNames is not null)
+        {
+            impl = new OpsOffered(impl, ParseOps(opNames));
         }
 
         int maxLine = Impl.LineLimitSetting.Read();

@@ -219,6 +219,11 @@ public sealed class ProtocolServer(ICellPhysics impl)
                         return Error($"transition queries (load_cells) not served by {impl.Name} (it does not offer find_cell_transition)");
                     }
 
+                    if (StaticRefused(scene, loadCells) is string noStatic)
+                    {
+                        return noStatic;
+                    }
+
                     var r = scene is null && !loadCells
                         ? impl.FindCell(Wire.ReadCell(request, "cell"), Wire.ReadOrigin(request), Wire.ReadSpheres(request, "spheres"), Wire.ReadOptionalCell(request, "current"))
                         : impl.FindCell(scene, Wire.ReadCell(request, "cell"), Wire.ReadSpheres(request, "spheres"), Wire.ReadOptionalCell(request, "current"), loadCells);
@@ -250,9 +255,20 @@ public sealed class ProtocolServer(ICellPhysics impl)
             return Error($"transition queries (load_cells) not served by {impl.Name} (it does not offer find_cell_transition)");
         }
 
+        if (StaticRefused(scene, walk.LoadCells) is string noStatic)
+        {
+            return noStatic;
+        }
+
         var answers = impl.FindCellWalk(walk);
         return Wire.Line(w => WalkWire.WriteAnswer(w, answers));
     }
+
+    // A scene query asked as static placement of an implementation that offers only the transition kind (issue #29).
+    private string? StaticRefused(Scene? scene, bool loadCells) =>
+        scene is not null && !loadCells && (impl.Ops & Op.FindCellScene) == 0
+            ? Error($"static placement (find_cell_scene) not offered by {impl.Name}: it answers scenes only as transitions (load_cells true)")
+            : null;
 
     // The scene a find_cell or find_cell_walk request names: scene_id (loaded), an inline scene, or null (open land).
     // Returns the error answer when the request cannot be served, else null.
@@ -273,9 +289,9 @@ public sealed class ProtocolServer(ICellPhysics impl)
         }
         else if (sceneField.ValueKind != JsonValueKind.Null)
         {
-            if ((impl.Ops & Op.FindCellScene) == 0)
+            if (!SceneQueryKinds.OffersScenes(impl.Ops))
             {
-                return Error($"scenes not served by {impl.Name} (it does not offer find_cell_scene)");
+                return Error($"scenes not served by {impl.Name} (it offers neither find_cell_scene nor find_cell_transition)");
             }
 
             scene = ReadScene(sceneField);
@@ -290,9 +306,9 @@ public sealed class ProtocolServer(ICellPhysics impl)
 
     private string LoadScene(JsonElement request)
     {
-        if ((impl.Ops & Op.FindCellScene) == 0)
+        if (!SceneQueryKinds.OffersScenes(impl.Ops))
         {
-            return Error($"scenes not served by {impl.Name} (it does not offer find_cell_scene)");
+            return Error($"scenes not served by {impl.Name} (it offers neither find_cell_scene nor find_cell_transition)");
         }
 
         var scene = request.TryGetProperty("dat", out var dat) ? DatWire.ReadScene(dat) : ReadScene(Wire.Field(request, "scene"));
@@ -342,8 +358,8 @@ public sealed class ProtocolServer(ICellPhysics impl)
             w.WriteString("name", impl.Name);
             w.WriteStartArray("ops");
             var ops = impl.Ops & ~(Op.LoadScene | Op.DatRecords | Op.FindCellWalk);
-            ops |= Walks && (ops & (Op.FindCell | Op.FindCellScene)) != 0 ? Op.FindCellWalk : Op.None; // threaded here (WalkThread)
-            if (LoadScenes && (ops & Op.FindCellScene) != 0)
+            ops |= Walks && (ops & (Op.FindCell | SceneQueryKinds.Either)) != 0 ? Op.FindCellWalk : Op.None; // threaded here (WalkThread)
+            if (LoadScenes && SceneQueryKinds.OffersScenes(ops))
             {
                 ops |= Op.LoadScene; // the server holds the scenes; the implementation behind it needs nothing for it
                 ops |= DatRecords ? Op.DatRecords : Op.None; // and reads them from records with the project's reader
