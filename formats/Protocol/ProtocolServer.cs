@@ -32,6 +32,12 @@ public sealed class ProtocolServer(ICellPhysics impl)
     /// <summary>Gets or initializes a value indicating whether the server announces <c>find_cell_walk</c> (true by default; false serves as an older server would: walks come query by query).</summary>
     public bool Walks { get; init; } = true;
 
+    /// <summary>Gets or initializes a value indicating whether the server declares <c>"frame": "world"</c> and converts each request's world coordinates back to block frames, as a world-frame port's shim would (<see cref="WorldFrame"/>).</summary>
+    public bool InWorldFrame { get; init; }
+
+    /// <summary>Gets or initializes a planted bug of that conversion (the suite must fail it).</summary>
+    public WorldFrameFault FrameFault { get; init; }
+
     /// <summary>Reads requests until end of input, answering each on its own line.</summary>
     /// <param name="input">Requests, UTF-8 lines.</param>
     /// <param name="output">Answers (flushed after each).</param>
@@ -94,7 +100,7 @@ public sealed class ProtocolServer(ICellPhysics impl)
     {
         try
         {
-            using var doc = Wire.Parse(line);
+            using var doc = Wire.Parse(InWorldFrame ? WorldFrame.ToBlock(line, FrameFault) : line);
             return Dispatch(doc.RootElement);
         }
         catch (WireException e)
@@ -132,6 +138,11 @@ public sealed class ProtocolServer(ICellPhysics impl)
                         return loadedScenes.Remove(id) ? Wire.Line(w => w.WriteBoolean("ok", true)) : Error($"unknown scene_id \"{Wire.Brief(id, 40)}\"");
                     }
                 }
+        }
+
+        if (op == "find_cell_walk" && InWorldFrame)
+        {
+            return Error("find_cell_walk is not offered in the world frame (walks are asked query by query)");
         }
 
         if (op == "find_cell_walk")
@@ -358,7 +369,7 @@ public sealed class ProtocolServer(ICellPhysics impl)
             w.WriteString("name", impl.Name);
             w.WriteStartArray("ops");
             var ops = impl.Ops & ~(Op.LoadScene | Op.DatRecords | Op.FindCellWalk);
-            ops |= Walks && (ops & (Op.FindCell | SceneQueryKinds.Either)) != 0 ? Op.FindCellWalk : Op.None; // threaded here (WalkThread)
+            ops |= Walks && !InWorldFrame && (ops & (Op.FindCell | SceneQueryKinds.Either)) != 0 ? Op.FindCellWalk : Op.None; // threaded here (WalkThread)
             if (LoadScenes && SceneQueryKinds.OffersScenes(ops))
             {
                 ops |= Op.LoadScene; // the server holds the scenes; the implementation behind it needs nothing for it
@@ -372,6 +383,11 @@ public sealed class ProtocolServer(ICellPhysics impl)
 
             w.WriteEndArray();
             w.WriteString("pick", PickNames.Of(impl.Pick));
+            if (InWorldFrame)
+            {
+                w.WriteString("frame", WorldFrame.Name);
+            }
+
             var fidelity = FidelityNames.Names(impl.Indoor, impl.Outdoor);
             if (fidelity.Count > 0)
             {

@@ -137,7 +137,8 @@ public sealed class Invariant<TCase> : Invariant
 
     /// <summary>
     /// Checks one case. An exception from the implementation is itself a violation (every operation must answer
-    /// every input), except <see cref="AdapterFailureException"/>, which is a tool error and propagates.
+    /// every input), except <see cref="AdapterFailureException"/>, which is a tool error and propagates, and
+    /// <see cref="UnposableQueryException"/>, a case the tool could not ask exactly (not judged).
     /// </summary>
     /// <param name="impl">The implementation under test.</param>
     /// <param name="c">The case.</param>
@@ -151,6 +152,10 @@ public sealed class Invariant<TCase> : Invariant
         catch (AdapterFailureException)
         {
             throw;
+        }
+        catch (UnposableQueryException e)
+        {
+            return Outcome.VacuousBecause(e.Message); // the tool could not ask it exactly: not judged (docs/protocol.md, "World frame")
         }
         catch (Exception e)
         {
