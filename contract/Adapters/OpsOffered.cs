@@ -5,10 +5,11 @@ using AcPhys.Spec.Scenes;
 namespace AcPhys.Spec.Adapters;
 
 /// <summary>
-/// An implementation offered with fewer operations than it has (<c>acphys serve --ops</c>): every answer is the inner
-/// one, <see cref="Ops"/> is the inner set masked, and an operation outside the mask throws
+/// An implementation offered with fewer operations than it has (<c>acphys serve --ops</c>), or declaring another mode:
+/// every answer is the inner one, <see cref="Ops"/> is the inner set masked, an operation outside the mask throws
 /// <see cref="NotSupportedException"/> as the contract allows — e.g. the reference restricted to transitions, the shape
-/// of a port whose only cell query is its transition code's (issue #29).
+/// of a port whose only cell query is its transition code's (issue #29) — and the declarations default to the inner
+/// ones (a finding is re-judged under other declarations to name the deviation that would make it intended).
 /// </summary>
 /// <param name="inner">The implementation.</param>
 /// <param name="mask">The operations (and transports) kept.</param>
@@ -21,13 +22,13 @@ public sealed class OpsOffered(ICellPhysics inner, Op mask) : ICellPhysics
     public Op Ops => inner.Ops & mask;
 
     /// <inheritdoc/>
-    public PickPolicy Pick => inner.Pick;
+    public PickPolicy Pick { get; init; } = inner.Pick;
 
     /// <inheritdoc/>
-    public IndoorFidelity Indoor => inner.Indoor;
+    public IndoorFidelity Indoor { get; init; } = inner.Indoor;
 
     /// <inheritdoc/>
-    public OutdoorFidelity Outdoor => inner.Outdoor;
+    public OutdoorFidelity Outdoor { get; init; } = inner.Outdoor;
 
     /// <inheritdoc/>
     public bool BlockIdToLcoord(CellId id, out Lcoord lcoord) => Need(Op.BlockIdToLcoord).BlockIdToLcoord(id, out lcoord);
