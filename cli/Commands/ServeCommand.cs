@@ -39,13 +39,50 @@ internal static class ServeCommand
         {
             Description = "Serve the --pick / --fidelity behaviour but announce retail in hello: a port deviating without declaring it (the suite must fail it; docs/facts-coverage.md).",
         };
-        var command = new Command("serve", "Serve the reference core over protocol v1 on stdin/stdout (docs/protocol.md); ends at end of input.") { fault, pick, fidelity, noLoad, noDat, noWalks, announceRetail };
-        command.SetAction(parse => Guard.Run("serve", () => Run(parse.GetValue(fault), parse.GetValue(pick), parse.GetValue(fidelity), parse.GetValue(noLoad), parse.GetValue(noDat), parse.GetValue(noWalks), parse.GetValue(announceRetail))));
+        var ops = new Option<string>("--ops")
+        {
+            Description = "Offer only these operations (comma-separated protocol names, e.g. every op but find_cell_scene: a port whose only scene query is the transition; docs/ports.md).",
+            HelpName = "OPS",
+        };
+        var worldFrame = new Option<bool>("--world-frame") { Description = "Declare \"frame\": \"world\" and take every point in world coordinates, as a port that keeps one world frame (docs/protocol.md, \"World frame\")." };
+        var worldFrameFault = new Option<string>("--world-frame-fault")
+        {
+            Description = "With --world-frame, convert with a planted shim bug: swapped-block-axes (the suite must fail it).",
+            HelpName = "FAULT",
+        };
+        var command = new Command("serve", "Serve the reference core over protocol v1 on stdin/stdout (docs/protocol.md); ends at end of input.") { fault, pick, fidelity, noLoad, noDat, noWalks, announceRetail, ops, worldFrame, worldFrameFault };
+        command.SetAction(parse => Guard.Run("serve", () => Run(
+            parse.GetValue(fault),
+            parse.GetValue(pick),
+            parse.GetValue(fidelity),
+            (parse.GetValue(noLoad), parse.GetValue(noDat), parse.GetValue(noWalks), parse.GetValue(announceRetail)),
+            parse.GetValue(ops),
+            (parse.GetValue(worldFrame), parse.GetValue(worldFrameFault)))));
         return command;
     }
 
-    private static int Run(string? faultId, string? pickName, string? fidelityNames, bool noLoadScene, bool noDatRecords, bool noWalks, bool announceRetail)
+    // --ops: the operations kept; the transports (load_scene, dat_records, find_cell_walk) are the server's own.
+    private static Op ParseOps(string names)
     {
+        var ops = OpNames.Parse(names.Split(',', StringSplitOptions.RemoveEmptyEntries | StringSplitOptions.TrimEntries), out var unknown);
+        if (unknown.Count > 0 || ops == Op.None)
+        {
+            throw new UsageException($"--ops: unknown or no operation '{(unknown.Count > 0 ? unknown[0] : names)}' (known: {string.Join(", ", OpNames.Names(Op.All))})");
+        }
+
+        return ops | Op.LoadScene | Op.DatRecords | Op.FindCellWalk;
+    }
+
+    private static int Run(string? faultId, string? pickName, string? fidelityNames, (bool NoLoadScene, bool NoDatRecords, bool NoWalks, bool AnnounceRetail) flags, string? opNames, (bool On, string? Fault) world)
+    {
+        var (noLoadScene, noDatRecords, noWalks, announceRetail) = flags;
+        var frameFault = world.Fault switch
+        {
+            null => WorldFrameFault.None,
+            "swapped-block-axes" when world.On => WorldFrameFault.SwappedBlockAxes,
+            "swapped-block-axes" => throw new UsageException("--world-frame-fault needs --world-frame"),
+            _ => throw new UsageException($"unknown --world-frame-fault '{world.Fault}' (known: swapped-block-axes)"),
+        };
         if (!PickNames.TryParse(pickName, out var pick))
         {
             throw new UsageException($"unknown pick policy '{pickName}' (known: retail, current-first)");
@@ -84,10 +121,15 @@ internal static class ServeCommand
             impl = new Impl.AnnouncedRetail(impl);
         }
 
+        if (opNames is not null)
+        {
+            impl = new OpsOffered(impl, ParseOps(opNames));
+        }
+
         int maxLine = Impl.LineLimitSetting.Read();
         using var input = Console.OpenStandardInput();
         using var output = new StreamWriter(Console.OpenStandardOutput(), new UTF8Encoding(false)) { NewLine = "\n" };
-        new ProtocolServer(impl) { LoadScenes = !noLoadScene, DatRecords = !noDatRecords, Walks = !noWalks }.Serve(input, output, maxLine);
+        new ProtocolServer(impl) { LoadScenes = !noLoadScene, DatRecords = !noDatRecords, Walks = !noWalks, InWorldFrame = world.On, FrameFault = frameFault }.Serve(input, output, maxLine);
         return ExitCodes.Ok;
     }
 }

@@ -153,6 +153,10 @@ internal sealed class VerifyReport(VerifySettings settings, ICellPhysics impl)
             {
                 Field(swept ? "case" : "shrunk", v.CaseText);
                 Field("message", v.Message);
+                if (Spec.Judging.IntendedUnder.Find(impl, r.Invariant.Id, [.. new[] { v.Case, r.Original?.Case }.OfType<AnyCase>().Distinct()]) is string declaration)
+                {
+                    Field("intended", $"your answers are the reference's if you declare {declaration} in hello (.NET: ICellPhysics Indoor/Outdoor/Pick): a documented deviation (docs/conformance.md, \"Declared modes\")");
+                }
             }
 
             if (swept)

@@ -28,6 +28,13 @@ public sealed record ScenePiece(Box? Box, IReadOnlyList<CellPlane>? Planes)
 /// <param name="OtherPortal">The other cell's portal index (0xFFFF = none).</param>
 public sealed record ScenePortal(CellPlane Plane, ushort Other, bool PortalSide, ushort OtherPortal = 0xFFFF)
 {
+    /// <summary>
+    /// Gets the portal's polygon, vertices in the cell's frame in winding order, or null when the scene gives the plane
+    /// alone (optional: a port that takes planes ignores it). When given, the plane derived from it (the normalised sum
+    /// of fan cross products, as the dat reader derives it) is <see cref="Plane"/> (docs/indoor.md, "Scene files").
+    /// </summary>
+    public IReadOnlyList<System.Numerics.Vector3>? Polygon { get; init; }
+
     /// <summary>Gets a value indicating whether the portal leads outside.</summary>
     public bool IsExit => Other == CellPortal.Outside;
 }

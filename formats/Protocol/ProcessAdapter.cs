@@ -48,6 +48,9 @@ public sealed class ProcessAdapter : ICellPhysics, IDisposable
     /// <inheritdoc/>
     public OutdoorFidelity Outdoor { get; private init; }
 
+    /// <summary>Gets a value indicating whether the implementation declared <c>"frame": "world"</c>: points travel in world coordinates (<see cref="WorldFrame"/>).</summary>
+    public bool InWorldFrame { get; private init; }
+
     /// <summary>Gets op names the implementation announced that protocol v1 does not know (ignored).</summary>
     public IReadOnlyList<string> UnknownOps { get; }
 
@@ -115,7 +118,13 @@ public sealed class ProcessAdapter : ICellPhysics, IDisposable
                     throw new WireException($"unknown fidelity \"{Wire.Brief(bad!, 60)}\" (known: {string.Join(", ", FidelityNames.Known)})");
                 }
 
-                return new ProcessAdapter(child, options.Timeout, name, ops, pick, unknown) { Indoor = indoor, Outdoor = outdoor };
+                string frame = hello.TryGetProperty("frame", out var f) && f.ValueKind != JsonValueKind.Null ? Wire.ReadString(hello, "frame") : "block";
+                if (frame is not ("block" or WorldFrame.Name))
+                {
+                    throw new WireException($"unknown frame \"{Wire.Brief(frame, 40)}\" (known: block, world)");
+                }
+
+                return new ProcessAdapter(child, options.Timeout, name, ops, pick, unknown) { Indoor = indoor, Outdoor = outdoor, InWorldFrame = frame == WorldFrame.Name };
             }
             catch (WireException e)
             {
@@ -233,7 +242,7 @@ public sealed class ProcessAdapter : ICellPhysics, IDisposable
     /// <returns>One answer per query.</returns>
     public IReadOnlyList<FindCellResult> FindCellWalk(WalkRequest walk)
     {
-        if ((Ops & Op.FindCellWalk) == 0 || walk.Steps.Count > WalkWire.MaxSteps)
+        if ((Ops & Op.FindCellWalk) == 0 || walk.Steps.Count > WalkWire.MaxSteps || InWorldFrame) // a world-frame port is asked query by query
         {
             return WalkThread.AskEach(this, walk);
         }
@@ -380,6 +389,7 @@ public sealed class ProcessAdapter : ICellPhysics, IDisposable
             w.WriteString("op", name);
             fields(w);
         });
+        request = InWorldFrame ? WorldFrame.ToWorld(request) : request;
 
         lock (gate)
         {

@@ -32,6 +32,12 @@ public sealed class ProtocolServer(ICellPhysics impl)
     /// <summary>Gets or initializes a value indicating whether the server announces <c>find_cell_walk</c> (true by default; false serves as an older server would: walks come query by query).</summary>
     public bool Walks { get; init; } = true;
 
+    /// <summary>Gets or initializes a value indicating whether the server declares <c>"frame": "world"</c> and converts each request's world coordinates back to block frames, as a world-frame port's shim would (<see cref="WorldFrame"/>).</summary>
+    public bool InWorldFrame { get; init; }
+
+    /// <summary>Gets or initializes a planted bug of that conversion (the suite must fail it).</summary>
+    public WorldFrameFault FrameFault { get; init; }
+
     /// <summary>Reads requests until end of input, answering each on its own line.</summary>
     /// <param name="input">Requests, UTF-8 lines.</param>
     /// <param name="output">Answers (flushed after each).</param>
@@ -94,7 +100,7 @@ public sealed class ProtocolServer(ICellPhysics impl)
     {
         try
         {
-            using var doc = Wire.Parse(line);
+            using var doc = Wire.Parse(InWorldFrame ? WorldFrame.ToBlock(line, FrameFault) : line);
             return Dispatch(doc.RootElement);
         }
         catch (WireException e)
@@ -132,6 +138,11 @@ public sealed class ProtocolServer(ICellPhysics impl)
                         return loadedScenes.Remove(id) ? Wire.Line(w => w.WriteBoolean("ok", true)) : Error($"unknown scene_id \"{Wire.Brief(id, 40)}\"");
                     }
                 }
+        }
+
+        if (op == "find_cell_walk" && InWorldFrame)
+        {
+            return Error("find_cell_walk is not offered in the world frame (walks are asked query by query)");
         }
 
         if (op == "find_cell_walk")
@@ -219,6 +230,11 @@ public sealed class ProtocolServer(ICellPhysics impl)
                         return Error($"transition queries (load_cells) not served by {impl.Name} (it does not offer find_cell_transition)");
                     }
 
+                    if (StaticRefused(scene, loadCells) is string noStatic)
+                    {
+                        return noStatic;
+                    }
+
                     var r = scene is null && !loadCells
                         ? impl.FindCell(Wire.ReadCell(request, "cell"), Wire.ReadOrigin(request), Wire.ReadSpheres(request, "spheres"), Wire.ReadOptionalCell(request, "current"))
                         : impl.FindCell(scene, Wire.ReadCell(request, "cell"), Wire.ReadSpheres(request, "spheres"), Wire.ReadOptionalCell(request, "current"), loadCells);
@@ -250,9 +266,20 @@ public sealed class ProtocolServer(ICellPhysics impl)
             return Error($"transition queries (load_cells) not served by {impl.Name} (it does not offer find_cell_transition)");
         }
 
+        if (StaticRefused(scene, walk.LoadCells) is string noStatic)
+        {
+            return noStatic;
+        }
+
         var answers = impl.FindCellWalk(walk);
         return Wire.Line(w => WalkWire.WriteAnswer(w, answers));
     }
+
+    // A scene query asked as static placement of an implementation that offers only the transition kind (issue #29).
+    private string? StaticRefused(Scene? scene, bool loadCells) =>
+        scene is not null && !loadCells && (impl.Ops & Op.FindCellScene) == 0
+            ? Error($"static placement (find_cell_scene) not offered by {impl.Name}: it answers scenes only as transitions (load_cells true)")
+            : null;
 
     // The scene a find_cell or find_cell_walk request names: scene_id (loaded), an inline scene, or null (open land).
     // Returns the error answer when the request cannot be served, else null.
@@ -273,9 +300,9 @@ public sealed class ProtocolServer(ICellPhysics impl)
         }
         else if (sceneField.ValueKind != JsonValueKind.Null)
         {
-            if ((impl.Ops & Op.FindCellScene) == 0)
+            if (!SceneQueryKinds.OffersScenes(impl.Ops))
             {
-                return Error($"scenes not served by {impl.Name} (it does not offer find_cell_scene)");
+                return Error($"scenes not served by {impl.Name} (it offers neither find_cell_scene nor find_cell_transition)");
             }
 
             scene = ReadScene(sceneField);
@@ -290,9 +317,9 @@ public sealed class ProtocolServer(ICellPhysics impl)
 
     private string LoadScene(JsonElement request)
     {
-        if ((impl.Ops & Op.FindCellScene) == 0)
+        if (!SceneQueryKinds.OffersScenes(impl.Ops))
         {
-            return Error($"scenes not served by {impl.Name} (it does not offer find_cell_scene)");
+            return Error($"scenes not served by {impl.Name} (it offers neither find_cell_scene nor find_cell_transition)");
         }
 
         var scene = request.TryGetProperty("dat", out var dat) ? DatWire.ReadScene(dat) : ReadScene(Wire.Field(request, "scene"));
@@ -342,8 +369,8 @@ public sealed class ProtocolServer(ICellPhysics impl)
             w.WriteString("name", impl.Name);
             w.WriteStartArray("ops");
             var ops = impl.Ops & ~(Op.LoadScene | Op.DatRecords | Op.FindCellWalk);
-            ops |= Walks && (ops & (Op.FindCell | Op.FindCellScene)) != 0 ? Op.FindCellWalk : Op.None; // threaded here (WalkThread)
-            if (LoadScenes && (ops & Op.FindCellScene) != 0)
+            ops |= Walks && !InWorldFrame && (ops & (Op.FindCell | SceneQueryKinds.Either)) != 0 ? Op.FindCellWalk : Op.None; // threaded here (WalkThread)
+            if (LoadScenes && SceneQueryKinds.OffersScenes(ops))
             {
                 ops |= Op.LoadScene; // the server holds the scenes; the implementation behind it needs nothing for it
                 ops |= DatRecords ? Op.DatRecords : Op.None; // and reads them from records with the project's reader
@@ -356,6 +383,11 @@ public sealed class ProtocolServer(ICellPhysics impl)
 
             w.WriteEndArray();
             w.WriteString("pick", PickNames.Of(impl.Pick));
+            if (InWorldFrame)
+            {
+                w.WriteString("frame", WorldFrame.Name);
+            }
+
             var fidelity = FidelityNames.Names(impl.Indoor, impl.Outdoor);
             if (fidelity.Count > 0)
             {

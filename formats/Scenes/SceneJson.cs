@@ -133,6 +133,21 @@ public static class SceneJson
                 w.WriteString("other", p.IsExit ? "outside" : Hex16(p.Other));
                 w.WriteBoolean("portalSide", p.PortalSide);
                 w.WriteNumber("otherPortal", p.OtherPortal);
+                if (p.Polygon is { } polygon)
+                {
+                    w.WriteStartArray("polygon");
+                    foreach (var v in polygon)
+                    {
+                        w.WriteStartArray();
+                        w.WriteRawValue(FloatText.Format(v.X));
+                        w.WriteRawValue(FloatText.Format(v.Y));
+                        w.WriteRawValue(FloatText.Format(v.Z));
+                        w.WriteEndArray();
+                    }
+
+                    w.WriteEndArray();
+                }
+
                 w.WriteEndObject();
             }
 
@@ -417,6 +432,33 @@ public static class SceneJson
             return new Vector3(v[0], v[1], v[2]);
         }
 
+        // The optional "polygon": [[x, y, z], ...] of a portal; its derived plane must be the plane given (issue #29).
+        public IReadOnlyList<Vector3>? PortalPolygon(JsonElement portal, CellPlane plane, string at)
+        {
+            if (!portal.TryGetProperty("polygon", out var e) || e.ValueKind == JsonValueKind.Null)
+            {
+                return null;
+            }
+
+            string path = at + ".polygon";
+            Require(e.ValueKind == JsonValueKind.Array && e.GetArrayLength() is >= 3 and <= 64, path, "expected an array of 3 to 64 vertices [x, y, z]");
+            var vertices = e.EnumerateArray().Select((v, i) =>
+            {
+                Require(v.ValueKind == JsonValueKind.Array && v.GetArrayLength() == 3, $"{path}[{i}]", "expected [x, y, z]");
+                var xyz = v.EnumerateArray().Select((x, k) => Number(x, $"{path}[{i}][{k}]")).ToArray();
+                return new Vector3(xyz[0], xyz[1], xyz[2]);
+            }).ToArray();
+            var derived = Spec.Dat.PolygonPlane.Of(vertices);
+            Require(derived is not null, path, "the polygon spans no area");
+            var got = derived.GetValueOrDefault();
+            var given = Spec.Dat.PolygonPlane.Unit(plane);
+            Require(
+                Vector3.Dot(got.Normal, given.Normal) > 1 - 1e-5f && MathF.Abs(got.D - given.D) <= 1e-3f,
+                path,
+                $"the polygon's plane (n {got.Normal}, d {got.D}) is not the portal's plane (n {given.Normal}, d {given.D}): wound the other way, or not on the plane");
+            return vertices;
+        }
+
         public CellPlane Plane(JsonElement e, string path)
         {
             Require(e.ValueKind == JsonValueKind.Object, path, "expected an object {\"n\": [x, y, z], \"d\": d}");
@@ -464,7 +506,7 @@ public static class SceneJson
                     Require(op.ValueKind == JsonValueKind.Number && op.TryGetUInt16(out otherPortal), path + ".otherPortal", "expected an integer 0..65535");
                 }
 
-                portals.Add(new ScenePortal(plane, other, side.GetBoolean(), otherPortal));
+                portals.Add(new ScenePortal(plane, other, side.GetBoolean(), otherPortal) { Polygon = PortalPolygon(p, plane, path) });
             }
 
             var visible = Items(c, "visible", at, required: false).Select(v => EnvCellId(v.Item, v.Path)).ToList();

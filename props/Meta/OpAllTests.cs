@@ -21,7 +21,7 @@ public sealed class OpAllTests
     [Fact(DisplayName = "OP-ALL: every operation an invariant requires is in Op.All, and the reference offers all of them")]
     public void All_CoversEveryRequirementAndTheReference()
     {
-        var required = InvariantCatalogue.All.Aggregate(Op.None, (ops, i) => ops | i.Requires);
+        var required = InvariantCatalogue.All.Aggregate(Op.None, (ops, i) => ops | i.Requires | i.SceneForms);
         Assert.Equal(Op.None, required & ~Op.All);
         Assert.Equal(Op.All, ReferenceAdapter.Instance.Ops & Op.All);
     }

@@ -15,7 +15,7 @@ public static class ConformanceInvariants
     /// <summary>FIND-CELL-CONFORMANCE.</summary>
     public static readonly Invariant<AnyWalk> FindCell = new(
         "FIND-CELL-CONFORMANCE",
-        "For every query of every generated walk (open land, and scenes both as static placement and, when offered, as a movement transition), the candidate list in insertion order with each entry's load-hint flag, the containing cell and HitsInteriorCell equal the reference core's answer to the same query in the implementation's declared mode (numerical ties excused: see docs/invariants.md).",
+        "For every query of every generated walk (open land, and scenes in each kind the implementation offers: static placement, movement transition, or both), the candidate list in insertion order with each entry's load-hint flag, the containing cell and HitsInteriorCell equal the reference core's answer to the same query in the implementation's declared mode (numerical ties excused: see docs/invariants.md).",
         "facts §3, §4, §5 (the reference core); docs/protocol.md (declared modes)",
         Op.FindCell,
         AnyWalkDomain.Instance,
@@ -118,15 +118,15 @@ public static class ConformanceInvariants
 
     private static Outcome SceneWalk(ICellPhysics impl, SceneWalk w)
     {
-        if ((impl.Ops & Op.FindCellScene) == 0)
+        if (!SceneQueryKinds.OffersScenes(impl.Ops))
         {
-            return Outcome.Vacuous;
+            return Outcome.VacuousBecause("the implementation offers neither find_cell_scene nor find_cell_transition");
         }
 
         var reference = Conformance.ReferenceFor(impl);
         bool superset = impl.Indoor.AceKeepsStaleCells;
         var scene = (impl.Ops & Op.DatRecords) != 0 ? DatRoundTrip.Of(w.Scene) : w.Scene; // what the implementation was sent
-        foreach (bool loadCells in (impl.Ops & Op.FindCellTransition) != 0 ? [false, true] : new[] { false })
+        foreach (bool loadCells in SceneQueryKinds.Offered(impl.Ops))
         {
             var trace = SceneWalkRunner.Run(impl, w, loadCells);
             for (int i = 0; i < trace.Count; i++)

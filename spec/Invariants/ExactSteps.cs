@@ -16,8 +16,8 @@ public static class ExactSteps
     public const double BspPadding = 0.01;
 
     /// <summary>
-    /// Checks every step of the walk, as static placement and, when the implementation offers it, as a movement
-    /// transition (facts §6.14); the first violation wins, else Holds when some step applied.
+    /// Checks every step of the walk in each kind of scene query the implementation offers: static placement, movement
+    /// transition (facts §6.14), or both (<see cref="SceneQueryKinds"/>); the first violation wins, else Holds when some step applied.
     /// </summary>
     /// <param name="impl">The implementation.</param>
     /// <param name="w">The scene walk.</param>
@@ -28,7 +28,7 @@ public static class ExactSteps
         var scene = ExactScene.Of(w.Scene);
         bool applied = false;
         string? why = null;
-        foreach (bool loadCells in (impl.Ops & Op.FindCellTransition) != 0 ? [false, true] : new[] { false })
+        foreach (bool loadCells in SceneQueryKinds.Offered(impl.Ops))
         {
             foreach (var s in SceneWalkRunner.Run(impl, w, loadCells))
             {

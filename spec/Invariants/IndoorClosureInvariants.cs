@@ -16,27 +16,27 @@ public static class IndoorClosureInvariants
         "NEIGHBOURS-COMPLETE",
         "For every loaded env candidate and every portal of it into a loaded env cell of its block, when a sphere (centre in the position's block frame, no block offset) intersects that cell's first piece by more than 1 mm under the BSP test (R = r + 0.01), the cell is a candidate — cells appended during the closure are walked too — unless the static visibility filter removes it (not the position and not in its VisibleCells) or the declared ACE lookup does not see it.",
         "facts §4 step 4a, §4 step 5, §5.1, §5.7, §6.10, §7 #10",
-        Op.FindCellScene,
+        Op.None,
         SceneDomain.Instance,
-        (impl, w) => ExactSteps.EachStep(impl, w, (scene, s) => Neighbours(impl, scene, s)));
+        (impl, w) => ExactSteps.EachStep(impl, w, (scene, s) => Neighbours(impl, scene, s)), sceneForms: SceneQueryKinds.Either);
 
     /// <summary>BUILDING-ENTRY-COMPLETE.</summary>
     public static readonly Invariant<SceneWalk> BuildingEntryComplete = new(
         "BUILDING-ENTRY-COMPLETE",
         "For every loaded land candidate with a building attached and every building portal with a portal index other than 0xFFFF into a loaded env cell, when a sphere (centre in the position's block frame, no block offset) intersects that cell's first piece by more than 1 mm under the BSP test, the cell is a candidate, unless the static visibility filter removes it.",
         "facts §4 step 4a, §5.3, §5.7, §6.11",
-        Op.FindCellScene,
+        Op.None,
         SceneDomain.Instance,
-        (impl, w) => ExactSteps.EachStep(impl, w, (scene, s) => BuildingEntry(impl, scene, s)));
+        (impl, w) => ExactSteps.EachStep(impl, w, (scene, s) => BuildingEntry(impl, scene, s)), sceneForms: SceneQueryKinds.Either);
 
     /// <summary>ENV-CANDIDATE-JUSTIFIED.</summary>
     public static readonly Invariant<SceneWalk> EnvCandidateJustified = new(
         "ENV-CANDIDATE-JUSTIFIED",
         "Every loaded env candidate is the position itself, or a sphere comes within 1 mm of intersecting its first piece under the BSP test (no block offset; later pieces hang under negative children, which retail never walks) and it is behind a portal of another walked env candidate or behind a building portal with a portal index other than 0xFFFF of a walked land candidate's building (after the static filter, of any loaded env cell or any reachable land cell).",
         "facts §4 step 4a, §5.1, §5.3, §5.7",
-        Op.FindCellScene,
+        Op.None,
         SceneDomain.Instance,
-        (impl, w) => impl.Indoor.AceKeepsStaleCells ? Outcome.Vacuous : ExactSteps.EachStep(impl, w, (scene, s) => Justified(impl, scene, s)));
+        (impl, w) => impl.Indoor.AceKeepsStaleCells ? Outcome.Vacuous : ExactSteps.EachStep(impl, w, (scene, s) => Justified(impl, scene, s)), sceneForms: SceneQueryKinds.Either);
 
     /// <summary>Gets the closure invariants.</summary>
     public static IReadOnlyList<Invariant<SceneWalk>> All { get; } = [NeighboursComplete, BuildingEntryComplete, EnvCandidateJustified];

@@ -15,27 +15,27 @@ public static class IndoorExactInvariants
         "HITS-INTERIOR",
         "When reported, HitsInteriorCell is true exactly when the position is indoor by its low word, or some env cell is a candidate or the containing cell (from a land position env cells enter only by building entry, which sets it).",
         "facts §1.1, §4 step 3, §4 step 4b, §5.3",
-        Op.FindCellScene,
+        Op.None,
         SceneDomain.Instance,
-        (impl, w) => ExactSteps.EachStep(impl, w, (_, s) => Hits(impl, s)));
+        (impl, w) => ExactSteps.EachStep(impl, w, (_, s) => Hits(impl, s)), sceneForms: SceneQueryKinds.Either);
 
     /// <summary>LAND-VIA-EXIT.</summary>
     public static readonly Invariant<SceneWalk> LandViaExit = new(
         "LAND-VIA-EXIT",
         "In a transition query from a loaded env cell, land cells are candidates only when some sphere comes within 1 mm of straddling the infinite plane of an exit portal of a walked env candidate (−(r + EPS) < d < r + EPS, centre not offset), and when one straddles it by more than 1 mm the land cell under sphere 0's centre is a candidate (a load hint in an unloaded block, unless unloaded land cells are declared dropped).",
         "facts §3.3, §5.1, §6.9, §7 #2, §7 #12",
-        Op.FindCellScene | Op.FindCellTransition,
+        Op.None,
         SceneDomain.Instance,
-        (impl, w) => ExactSteps.EachStep(impl, w, (scene, s) => Exit(impl, scene, s)));
+        (impl, w) => ExactSteps.EachStep(impl, w, (scene, s) => Exit(impl, scene, s)), sceneForms: Op.FindCellTransition);
 
     /// <summary>PICK-FIRST-ENV.</summary>
     public static readonly Invariant<SceneWalk> PickFirstEnv = new(
         "PICK-FIRST-ENV",
         "With the retail pick and no visibility filter, when a loaded env candidate with portals contains sphere 0's centre (re-expressed in its block frame with GetBlockOffset) by more than 1 mm in its first piece (the BSP's positive chain), the containing cell is the first such candidate in the answer's order, unless an earlier env candidate is within 1 mm of containing it; the other spheres never matter.",
         "facts §4 step 4b, §5.5, §5.7, §5.9, §6.8, §7 #13",
-        Op.FindCellScene,
+        Op.None,
         SceneDomain.Instance,
-        (impl, w) => impl.Pick != PickPolicy.Retail ? Outcome.Vacuous : ExactSteps.EachStep(impl, w, (scene, s) => FirstEnv(impl, scene, s)));
+        (impl, w) => impl.Pick != PickPolicy.Retail ? Outcome.Vacuous : ExactSteps.EachStep(impl, w, (scene, s) => FirstEnv(impl, scene, s)), sceneForms: SceneQueryKinds.Either);
 
     /// <summary>Gets every exact indoor invariant, the closure's first.</summary>
     public static IReadOnlyList<Invariant<SceneWalk>> All { get; } = [.. IndoorClosureInvariants.All, HitsInterior, LandViaExit, PickFirstEnv];

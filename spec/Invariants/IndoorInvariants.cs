@@ -17,7 +17,7 @@ public static class IndoorInvariants
         "INTERIOR-WINS",
         "When a loaded env cell among the candidates contains sphere 0's centre by more than 1 mm, the containing cell is an env cell, never a land cell.",
         "facts §4 step 4b",
-        Op.FindCellScene,
+        Op.None,
         SceneDomain.Instance,
         (impl, w) =>
         {
@@ -39,14 +39,15 @@ public static class IndoorInvariants
             }
 
             return applied ? Outcome.Holds : Outcome.Vacuous;
-        });
+        },
+        sceneForms: SceneQueryKinds.Either);
 
     /// <summary>HYSTERESIS-INDOOR.</summary>
     public static readonly Invariant<SceneWalk> HysteresisIndoor = new(
         "HYSTERESIS-INDOOR",
         "With the current-cell-first pick in a scene, a current cell that is a candidate and still contains sphere 0's centre is kept (a current land cell yields only to an env cell that contains the centre), so jitter at a portal or a line switches at most once per real crossing.",
         "facts §4 step 4b; acdream's hysteresis",
-        Op.FindCellScene,
+        Op.None,
         SceneDomain.Instance,
         (impl, w) =>
         {
@@ -77,14 +78,14 @@ public static class IndoorInvariants
 
             return applied ? Outcome.Holds : Outcome.Vacuous;
         },
-        PickPolicy.CurrentFirst);
+        PickPolicy.CurrentFirst, sceneForms: SceneQueryKinds.Either);
 
     /// <summary>PORTAL-TRANSIT.</summary>
     public static readonly Invariant<SceneWalk> PortalTransit = new(
         "PORTAL-TRANSIT",
         "With steps no longer than the radius: a centre inside a loaded env cell by 1 mm on two steps running is in that cell after the second (no absorbing outdoor state), except while the position is a land cell framed in another block than the cell (facts §6.11: retail does not re-frame the building test) or the cell is not directly behind a valid building portal whose building's land cell is a candidate (facts §5.3: a building is reached only through the land cell it is attached to); a centre clear of every cell on two steps running over loaded land, queried from a loaded cell, is in a land cell (no absorbing indoor state); neither clause applies while the client still holds a cell it lost for a reason NEVER-NULL excuses; and a load hint for an unloaded cell behind the position's portal appears exactly when a sphere reaches past r + EPS toward it.",
         "facts §5.1, §5.3, §5.4, §6.9, §6.11",
-        Op.FindCellScene,
+        Op.None,
         SceneDomain.Instance,
         (impl, w) =>
         {
@@ -155,14 +156,15 @@ public static class IndoorInvariants
             }
 
             return applied ? Outcome.Holds : Outcome.Vacuous;
-        });
+        },
+        sceneForms: SceneQueryKinds.Either);
 
     /// <summary>NO-TUNNEL.</summary>
     public static readonly Invariant<SceneWalk> NoTunnel = new(
         "NO-TUNNEL",
         "With steps no longer than the radius, the current cell changes only to a land cell of the 3 × 3 neighbourhood (from land), a portal-linked env cell or one linked to such a neighbour (from an env cell: two portals in one query, through a thin cell), a land cell (from an env cell with an exit, or next to one), or a cell behind a building portal or portal-linked to one (from land: the transit closure runs within one query); not checked while the client still holds a cell it lost for a reason NEVER-NULL excuses.",
         "facts §3.2, §5.1, §5.3",
-        Op.FindCellScene,
+        Op.None,
         SceneDomain.Instance,
         (impl, w) =>
         {
@@ -190,14 +192,15 @@ public static class IndoorInvariants
             }
 
             return applied ? Outcome.Holds : Outcome.Vacuous;
-        });
+        },
+        sceneForms: SceneQueryKinds.Either);
 
     /// <summary>VISIBILITY.</summary>
     public static readonly Invariant<SceneWalk> Visibility = new(
         "VISIBILITY",
         "For a query from a loaded env cell (LoadCells false), every loaded candidate is that cell or in its VisibleCells; only load hints may be anything else.",
         "facts §4 step 5, §6.14",
-        Op.FindCellScene,
+        Op.None,
         SceneDomain.Instance,
         (impl, w) =>
         {
@@ -221,14 +224,15 @@ public static class IndoorInvariants
             }
 
             return applied ? Outcome.Holds : Outcome.Vacuous;
-        });
+        },
+        sceneForms: Op.FindCellScene);
 
     /// <summary>ENTER-EXIT.</summary>
     public static readonly Invariant<SceneWalk> EnterExit = new(
         "ENTER-EXIT",
         "A walk that starts outdoors clear of every cell, goes in and comes back out the same way to the same point ends in the land cell it started in (unless on the way it lost its cell for a reason NEVER-NULL excuses).",
         "facts §4 (the pick depends on the position and, with current-first, on the path only at ties)",
-        Op.FindCellScene,
+        Op.None,
         SceneDomain.Instance,
         (impl, w) =>
         {
@@ -257,14 +261,15 @@ public static class IndoorInvariants
             return last.Current == first.Containing
                 ? Outcome.Holds
                 : Outcome.Violated($"started outdoors in {first.Containing}, walked in and back out to the same point, ended in {last.Current}");
-        });
+        },
+        sceneForms: SceneQueryKinds.Either);
 
     /// <summary>SCENE-TRANSLATION.</summary>
     public static readonly Invariant<SceneWalk> SceneTranslation = new(
         "SCENE-TRANSLATION",
         "Moving the whole scene and the walk by one landblock changes nothing but the ids: every step's candidates and containing cell are the originals moved by the same block offset (away from the map edge).",
         "facts §1.3, §5.8 (block frames are relative)",
-        Op.FindCellScene,
+        Op.None,
         SceneDomain.Instance,
         (impl, w) =>
         {
@@ -294,14 +299,15 @@ public static class IndoorInvariants
             }
 
             return Outcome.Holds;
-        });
+        },
+        sceneForms: SceneQueryKinds.Either);
 
     /// <summary>CONTAINING-CONTAINS.</summary>
     public static readonly Invariant<SceneWalk> ContainingContains = new(
         "CONTAINING-CONTAINS",
         "The containing cell contains sphere 0's centre: an env cell's volume within 1 mm, a land cell's closed square within the 1 mm tie band.",
         "facts §4 step 4b, §5.5",
-        Op.FindCellScene,
+        Op.None,
         SceneDomain.Instance,
         (impl, w) =>
         {
@@ -326,14 +332,15 @@ public static class IndoorInvariants
             }
 
             return applied ? Outcome.Holds : Outcome.Vacuous;
-        });
+        },
+        sceneForms: SceneQueryKinds.Either);
 
     /// <summary>NEVER-NULL.</summary>
     public static readonly Invariant<SceneWalk> NeverNull = new(
         "NEVER-NULL",
         "Every query has a containing cell, except for a documented reason: sphere 0's centre off the map, the position's own cell not loaded, over an unloaded block (unless inside the position's own env cell), in a scene with unloaded cells, outside the position's env cell after a step longer than the radius (facts §6.9) or with no sphere reaching any of its portals (it left through a wall: an env cell is left only through portals, §5.1), and while the client still holds a cell it lost for one of these reasons (retail's transition would have refused that move).",
         "facts §4 step 4b, §5.1, §6.3, §6.9",
-        Op.FindCellScene,
+        Op.None,
         SceneDomain.Instance,
         (impl, w) =>
         {
@@ -359,14 +366,15 @@ public static class IndoorInvariants
             }
 
             return applied ? Outcome.Holds : Outcome.Vacuous;
-        });
+        },
+        sceneForms: SceneQueryKinds.Either);
 
     /// <summary>SCENE-SOUNDNESS.</summary>
     public static readonly Invariant<SceneWalk> SceneSoundness = new(
         "SCENE-SOUNDNESS",
         "Every candidate is within reach of the body: a land cell's square within r + 1 mm of a sphere centre per axis, a loaded env cell the position's own or within r + 0.01 + 1 mm of a sphere, an unloaded env cell the full id of a portal target of a loaded candidate; none twice (the array is reset per call).",
         "facts §3.2, §4 step 1, §5.1, §5.3, §5.7, §6.13",
-        Op.FindCellScene,
+        Op.None,
         SceneDomain.Instance,
         (impl, w) =>
         {
@@ -379,7 +387,8 @@ public static class IndoorInvariants
             }
 
             return Outcome.Holds;
-        });
+        },
+        sceneForms: SceneQueryKinds.Either);
 
     /// <summary>Gets every scene invariant.</summary>
     public static IReadOnlyList<Invariant<SceneWalk>> All { get; } =

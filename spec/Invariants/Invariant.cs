@@ -14,13 +14,15 @@ public abstract class Invariant
     /// <param name="source">The spec section(s) it implements.</param>
     /// <param name="requires">Operations an implementation must offer for it to be tested.</param>
     /// <param name="requiresPick">The pick policy the invariant is about, or null for any.</param>
-    protected Invariant(string id, string statement, string source, Op requires, PickPolicy? requiresPick)
+    /// <param name="sceneForms">The scene query kinds it is stated for (<see cref="SceneForms"/>), or none.</param>
+    protected Invariant(string id, string statement, string source, Op requires, PickPolicy? requiresPick, Op sceneForms = Op.None)
     {
         Id = id;
         Statement = statement;
         Source = source;
         Requires = requires;
         RequiresPick = requiresPick;
+        SceneForms = sceneForms & SceneQueryKinds.Either;
     }
 
     /// <summary>Gets the stable ID.</summary>
@@ -32,8 +34,15 @@ public abstract class Invariant
     /// <summary>Gets the spec section(s) it implements.</summary>
     public string Source { get; }
 
-    /// <summary>Gets the operations it needs.</summary>
+    /// <summary>Gets the operations it needs, besides a scene query (<see cref="SceneForms"/>).</summary>
     public Op Requires { get; }
+
+    /// <summary>
+    /// Gets the scene query kinds the invariant is stated for: <see cref="Op.FindCellScene"/> (static placement),
+    /// <see cref="Op.FindCellTransition"/>, or both; an implementation offering any of them is tested in the kinds it
+    /// offers (<see cref="SceneQueryKinds"/>). <see cref="Op.None"/> for an invariant that asks no scene query.
+    /// </summary>
+    public Op SceneForms { get; }
 
     /// <summary>Gets the pick policy the invariant is about (STABLE-PICK: retail; HYSTERESIS: current-first), or null.</summary>
     public PickPolicy? RequiresPick { get; }
@@ -55,15 +64,29 @@ public abstract class Invariant
     /// <summary>Says why an implementation cannot be tested against this invariant, or null when it can.</summary>
     /// <param name="impl">The implementation.</param>
     /// <returns>The reason, or null.</returns>
-    public string? WhyNotTestable(ICellPhysics impl)
+    public string? WhyNotTestable(ICellPhysics impl) => WhyNotTestable(impl.Ops, impl.Pick);
+
+    /// <summary>Says why an implementation offering these operations and declaring this pick cannot be tested, or null when it can.</summary>
+    /// <param name="ops">The operations it offers.</param>
+    /// <param name="pick">The pick it declares.</param>
+    /// <returns>The reason, or null.</returns>
+    public string? WhyNotTestable(Op ops, PickPolicy pick)
     {
-        if ((impl.Ops & Requires) != Requires)
+        if ((ops & Requires) != Requires)
         {
-            return "implementation lacks " + string.Join(", ", OpNames.Names(Requires & ~impl.Ops));
+            return "implementation lacks " + string.Join(", ", OpNames.Names(Requires & ~ops));
         }
 
-        return RequiresPick is PickPolicy p && impl.Pick != p
-            ? $"applies to the {PickNames.Of(p)} pick; implementation declares {PickNames.Of(impl.Pick)}"
+        if (SceneForms != Op.None && (ops & SceneForms) == 0)
+        {
+            // A scene invariant stated for one kind only, and the implementation offers the other (issue #29).
+            return SceneQueryKinds.OffersScenes(ops)
+                ? $"states {(SceneForms == Op.FindCellScene ? "static placement" : "the movement transition")} only ({OpNames.Names(SceneForms)[0]}); implementation offers {string.Join(", ", OpNames.Names(ops & SceneQueryKinds.Either))}"
+                : "implementation lacks " + string.Join(" or ", OpNames.Names(SceneForms));
+        }
+
+        return RequiresPick is PickPolicy p && pick != p
+            ? $"applies to the {PickNames.Of(p)} pick; implementation declares {PickNames.Of(pick)}"
             : null;
     }
 
@@ -94,8 +117,9 @@ public sealed class Invariant<TCase> : Invariant
     /// <param name="domain">Where its cases come from.</param>
     /// <param name="check">The check.</param>
     /// <param name="requiresPick">The pick policy it is about, or null.</param>
-    public Invariant(string id, string statement, string source, Op requires, ICaseDomain<TCase> domain, Func<ICellPhysics, TCase, Outcome> check, PickPolicy? requiresPick = null)
-        : base(id, statement, source, requires, requiresPick)
+    /// <param name="sceneForms">The scene query kinds it is stated for, or none (<see cref="Invariant.SceneForms"/>).</param>
+    public Invariant(string id, string statement, string source, Op requires, ICaseDomain<TCase> domain, Func<ICellPhysics, TCase, Outcome> check, PickPolicy? requiresPick = null, Op sceneForms = Op.None)
+        : base(id, statement, source, requires, requiresPick, sceneForms)
     {
         this.check = check;
         Domain = domain;
@@ -113,7 +137,8 @@ public sealed class Invariant<TCase> : Invariant
 
     /// <summary>
     /// Checks one case. An exception from the implementation is itself a violation (every operation must answer
-    /// every input), except <see cref="AdapterFailureException"/>, which is a tool error and propagates.
+    /// every input), except <see cref="AdapterFailureException"/>, which is a tool error and propagates, and
+    /// <see cref="UnposableQueryException"/>, a case the tool could not ask exactly (not judged).
     /// </summary>
     /// <param name="impl">The implementation under test.</param>
     /// <param name="c">The case.</param>
@@ -127,6 +152,10 @@ public sealed class Invariant<TCase> : Invariant
         catch (AdapterFailureException)
         {
             throw;
+        }
+        catch (UnposableQueryException e)
+        {
+            return Outcome.VacuousBecause(e.Message); // the tool could not ask it exactly: not judged (docs/protocol.md, "World frame")
         }
         catch (Exception e)
         {

@@ -47,7 +47,7 @@ public sealed record CaseRun(Judgement Judgement, IReadOnlyList<WalkStep> Trace,
             return c switch
             {
                 AnyCase.OutdoorWalk w when (impl.Ops & Op.FindCell) != 0 => WalkRunner.Run(impl, w.Walk),
-                AnyCase.WalkInScene sw when (impl.Ops & Op.FindCellScene) != 0 => SceneWalkRunner.Run(impl, sw.Walk),
+                AnyCase.WalkInScene sw when SceneQueryKinds.OffersScenes(impl.Ops) => SceneWalkRunner.Run(impl, sw.Walk),
                 _ => [],
             };
         }

@@ -1,0 +1,30 @@
+using AcPhys.E2E.Support;
+
+namespace AcPhys.E2E;
+
+/// <summary>
+/// Issue #29, actionable findings: a conformance finding names the documented deviation whose declaration would make
+/// it intended (the case re-judged with the port's answers under each switch); a port that declares it passes.
+/// </summary>
+public sealed class IntendedFindingTests
+{
+    [Fact]
+    public void AnUndeclaredTransitionFilterIsReportedWithTheSwitchThatMakesItIntended()
+    {
+        // The reference filtering its transitions as ACE does (facts §7 #9) but announcing retail.
+        var run = Acphys.Run(["verify", "--impl-cmd", Acphys.ServeCommand + " --fidelity ace-transition-filter --announce-retail", "--only", "FIND-CELL-CONFORMANCE", "--cases", "300", "--timeout", "60"]);
+        Assert.True(run.Exit == 1, run.ToString());
+        Assert.Contains("transition find_cell from", run.Out, StringComparison.Ordinal);
+        Assert.Contains("  intended   your answers are the reference's if you declare \"fidelity\": [\"ace-transition-filter\"] in hello", run.Out, StringComparison.Ordinal);
+    }
+
+    [Fact]
+    public void APortDeclaringAceAndServingTransitionsPassesFindCellConformance()
+    {
+        // Issue #29 done-when: the transition filter is part of ace, so the declared port is compared with ACE's transitions.
+        var run = Acphys.Run(["verify", "--impl-cmd", Acphys.ServeCommand + " --fidelity ace", "--only", "FIND-CELL-CONFORMANCE", "--cases", "300", "--timeout", "60"]);
+        Assert.True(run.Exit == 0, run.ToString());
+        Assert.Contains("verify: 1 invariant, 1 passed, 0 failed, 0 not tested", run.Out, StringComparison.Ordinal);
+        Assert.DoesNotContain("capabilities:", run.Out, StringComparison.Ordinal); // every op offered, find_cell_transition included
+    }
+}
