@@ -4,6 +4,7 @@
 #
 #   bench/served-verdicts.sh                      # all faults, 300 cases, 1 failure class per invariant
 #   bench/served-verdicts.sh --faults trunc-floor,nan-as-zero --cases 100
+#   bench/served-verdicts.sh --no-reference --faults ...  # a shard: leave out the unfaulted reference
 #   ACPHYS_DLL=/path/acphys.dll bench/served-verdicts.sh   # another build (default: cli/bin/Release/net10.0/acphys.dll)
 #
 # Build first: dotnet build -c Release cli/AcPhys.Cli.csproj. The build is copied to a temporary folder, so rebuilding
@@ -14,15 +15,17 @@ set -euo pipefail
 cases=300
 max_classes=1
 faults=""
+reference=reference
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 dll="${ACPHYS_DLL:-$root/cli/bin/Release/net10.0/acphys.dll}"
 
-usage() { sed -n '2,11p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; }
+usage() { sed -n '2,12p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; }
 while [[ $# -gt 0 ]]; do
   case "$1" in
     --cases) cases="$2"; shift 2 ;;
     --max-classes) max_classes="$2"; shift 2 ;;
     --faults) faults="$2"; shift 2 ;;
+    --no-reference) reference=""; shift ;;
     -h|--help) usage; exit 0 ;;
     *) echo "served-verdicts: unknown option $1" >&2; usage >&2; exit 2 ;;
   esac
@@ -63,11 +66,11 @@ PY
 count() { awk -v k="$2" '$2 == k' "$1" | wc -l | tr -d ' '; }
 
 started=$(date +%s)
-echo "served verdicts: $(echo "$faults" | tr ',' '\n' | wc -l | tr -d ' ') faults + the reference, --cases $cases --max-classes $max_classes, build $dll"
+echo "served verdicts: $(echo "$faults" | tr ',' '\n' | wc -l | tr -d ' ') faults${reference:+ + the reference}, --cases $cases --max-classes $max_classes, build $dll"
 echo "load at start: $(uptime | sed 's/.*load average: //')"
 differ=0
 broken=0
-for fault in reference ${faults//,/ }; do
+for fault in $reference ${faults//,/ }; do
   flag=(); serve_flag=""
   if [[ "$fault" != reference ]]; then flag=(--fault "$fault"); serve_flag=" --fault $fault"; fi
   common=(--cases "$cases" --max-classes "$max_classes" -q)
