@@ -38,6 +38,7 @@ fi
 
 work="$(mktemp -d "${TMPDIR:-/tmp}/served-verdicts.XXXXXX")"
 trap 'rm -rf "$work"' EXIT
+trap 'exit 130' INT TERM # the EXIT trap then removes the copy; each served child ends with its verify (ImplProcesses)
 cp -r "$(dirname "$dll")" "$work/bin"
 acphys=(dotnet "$work/bin/$(basename "$dll")")
 
