@@ -12,13 +12,20 @@ namespace AcPhys.Spec.Dat;
 public static class DatRoundTrip
 {
     private static readonly ConditionalWeakTable<Scene, Scene> Cache = [];
+    private static readonly ConditionalWeakTable<Scene, DatExport> Exports = [];
+
+    /// <summary>Returns the records a scene travels as (protocol v1 <c>load_scene</c> with <c>dat</c>), written once per scene instance.</summary>
+    /// <param name="scene">A valid scene.</param>
+    /// <returns>The export (manifest title "wire", source "load_scene").</returns>
+    /// <exception cref="DatFormatException">The scene exceeds what the records hold.</exception>
+    public static DatExport Records(Scene scene) => Exports.GetValue(scene, s => DatSceneWriter.Write(s, "wire", "load_scene"));
 
     /// <summary>Returns the scene as the records give it back.</summary>
     /// <param name="scene">A valid scene.</param>
-    /// <returns>read(write(scene)).</returns>
+    /// <returns>read(write(scene)), read from the very records <see cref="Records"/> sends.</returns>
     public static Scene Of(Scene scene) => Cache.GetValue(scene, s =>
     {
-        var export = DatSceneWriter.Write(s, "round trip", "conformance");
+        var export = Records(s);
         var bytes = export.Records.ToDictionary(r => r.Record, r => r.Bytes);
         return DatSceneReader.Read(export.Manifest, r => bytes[r]);
     });

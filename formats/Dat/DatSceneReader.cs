@@ -89,8 +89,9 @@ public static class DatSceneReader
         var scene = new Scene(manifest.Blocks, buildings, cells) { UnloadedBlocks = manifest.UnloadedBlocks, UnloadedCells = manifest.UnloadedCells };
         try
         {
-            // The same checks a scene file gets: references, declared blocks, unit quaternions, one building per land cell.
-            return SceneJson.Read(SceneJson.Write(scene), "records");
+            // The same checks a scene file gets (references, declared blocks, unit quaternions, one building per land
+            // cell), on the scene as built: no JSON round trip (issue #26), the same first message.
+            return new SceneRules("records").Check(scene, "$");
         }
         catch (SceneFormatException e)
         {

@@ -17,6 +17,9 @@ public static class Wire
     /// <summary>The protocol version this code speaks.</summary>
     public const int Version = 1;
 
+    // The default limits (depth 64, no comments, no trailing commas) plus duplicate keys refused while parsing.
+    private static readonly JsonDocumentOptions StrictOptions = new() { AllowDuplicateProperties = false };
+
     private static readonly JsonWriterOptions WriterOptions = new() { Indented = false, Encoder = System.Text.Encodings.Web.JavaScriptEncoder.UnsafeRelaxedJsonEscaping };
 
     /// <summary>Builds one message line (no newline) with the fields <paramref name="fields"/> writes.</summary>
@@ -38,8 +41,43 @@ public static class Wire
     /// <summary>Parses one message line into its root object.</summary>
     /// <param name="line">The line.</param>
     /// <returns>The parsed document (dispose it).</returns>
-    /// <exception cref="WireException">Not a JSON object, or a string or name in it is not valid text.</exception>
+    /// <exception cref="WireException">Not a JSON object, a key given twice in one object, or a string or name in it is not valid text.</exception>
+    /// <remarks>
+    /// Parse once (issue #26): a well-formed line is parsed by one pass that also refuses duplicate keys
+    /// (<see cref="JsonDocumentOptions.AllowDuplicateProperties"/>), after one scan of its text for a surrogate escape.
+    /// Only a line that fails (or may hold a surrogate escape) is read again by <see cref="ParseChecked"/>, the checks
+    /// one by one, so every refusal keeps its order and words.
+    /// </remarks>
     public static JsonDocument Parse(string line)
+    {
+        if (!Corpus.JsonStrings.MayHoldSurrogateEscape(line.AsSpan()))
+        {
+            JsonDocument? doc = null;
+            try
+            {
+                doc = JsonDocument.Parse(line, StrictOptions);
+            }
+            catch (JsonException)
+            {
+                // Not JSON, or a duplicate key: worded below.
+            }
+
+            if (doc is not null && doc.RootElement.ValueKind == JsonValueKind.Object && Corpus.JsonStrings.FirstUnreadable(doc.RootElement, "$") is null)
+            {
+                return doc;
+            }
+
+            doc?.Dispose();
+        }
+
+        return ParseChecked(line);
+    }
+
+    /// <summary>Parses one message line and checks it step by step: JSON, an object, readable text, distinct keys.</summary>
+    /// <param name="line">The line.</param>
+    /// <returns>The parsed document (dispose it).</returns>
+    /// <exception cref="WireException">The first defect, worded for the reader.</exception>
+    public static JsonDocument ParseChecked(string line)
     {
         JsonDocument doc;
         try

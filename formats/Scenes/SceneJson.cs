@@ -18,7 +18,7 @@ public static class SceneJson
     /// <summary>Tolerance on a quaternion's length.</summary>
     public const float UnitTolerance = 1e-4f;
 
-    private const int MaxItems = 10_000;
+    private const int MaxItems = SceneRules.MaxItems;
 
     /// <summary>Serialises a scene as a standalone JSON object.</summary>
     /// <param name="scene">The scene.</param>
@@ -218,12 +218,7 @@ public static class SceneJson
 
         var blocks = r.BlockList(e, "blocks", at, required: true);
         var unloadedBlocks = r.BlockList(e, "unloadedBlocks", at, required: false);
-        var declared = new HashSet<LandblockId>();
-        foreach (var (b, path) in blocks.Concat(unloadedBlocks))
-        {
-            r.Require(b.IsOnMap, path, $"block {b} is off the map (byte 0xFF)");
-            r.Require(declared.Add(b), path, $"duplicate block {b}");
-        }
+        var declared = r.Rules.Declared(blocks.Concat(unloadedBlocks));
 
         var unloadedCells = new List<(CellId Id, string Path)>();
         foreach (var (item, path) in r.Items(e, "unloadedCells", at, required: false))
@@ -245,74 +240,7 @@ public static class SceneJson
         }
 
         // Cross-references: ids unique, every cell in a declared block, every reference known.
-        var known = new Dictionary<CellId, string>();
-        for (int i = 0; i < cells.Count; i++)
-        {
-            string path = $"{cellElements[i].Path}.id";
-            r.Require(known.TryAdd(cells[i].Id, path), path, $"duplicate cell {cells[i].Id} (first at {known.GetValueOrDefault(cells[i].Id)})");
-            r.Require(declared.Contains(cells[i].Id.Landblock), path, $"cell {cells[i].Id} lies in block {cells[i].Id.Landblock}, which the scene does not declare");
-        }
-
-        foreach (var (id, path) in unloadedCells)
-        {
-            r.Require(known.TryAdd(id, path), path, $"duplicate cell {id} (first at {known.GetValueOrDefault(id)})");
-            r.Require(declared.Contains(id.Landblock), path, $"cell {id} lies in block {id.Landblock}, which the scene does not declare");
-        }
-
-        for (int i = 0; i < cells.Count; i++)
-        {
-            var c = cells[i];
-            string at0 = cellElements[i].Path;
-            for (int p = 0; p < c.Portals.Count; p++)
-            {
-                var portal = c.Portals[p];
-                if (portal.IsExit)
-                {
-                    continue;
-                }
-
-                var other = c.Id.WithLow(portal.Other);
-                r.Require(known.ContainsKey(other), $"{at0}.portals[{p}].other", $"unknown cell {other} (not declared in cells or unloadedCells)");
-                r.Require(other != c.Id, $"{at0}.portals[{p}].other", $"a portal of {c.Id} leads to itself");
-            }
-
-            for (int v = 0; v < c.Visible.Count; v++)
-            {
-                r.Require(known.ContainsKey(c.Visible[v]), $"{at0}.visible[{v}]", $"unknown cell {c.Visible[v]} (not declared in cells or unloadedCells)");
-            }
-        }
-
-        for (int i = 0; i < buildings.Count; i++)
-        {
-            var b = buildings[i];
-            string at0 = $"{at}.buildings[{i}]";
-            r.Require(declared.Contains(b.Block), at0 + ".block", $"block {b.Block} is not declared by the scene");
-            for (int p = 0; p < b.Portals.Count; p++)
-            {
-                var id = b.Block.BlockCell.WithLow(b.Portals[p].Cell);
-                r.Require(known.ContainsKey(id), $"{at0}.portals[{p}].cell", $"unknown cell {id} (not declared in cells or unloadedCells)");
-                if (b.Portals[p].Portal != BldPortal.None && cells.FirstOrDefault(c => c.Id == id) is { } target)
-                {
-                    // A building portal names one of its cell's portals, or carries retail's invalid marker 0xFFFF
-                    // (facts §5, EnvTransit; generated "invalid doors"); issue 28: portal 99 of a 2-portal cell was accepted.
-                    // A cell with no portals (a sealed closet entered only by its building portal) is named by portal 0:
-                    // the sphere path never reads the index beyond the 0xFFFF test (facts §5.3).
-                    int count = Math.Max(1, target.Portals.Count);
-                    r.Require(b.Portals[p].Portal < count, $"{at0}.portals[{p}].portal", $"cell {id} has {target.Portals.Count} portals (0..{count - 1}, or 65535 for none), not portal {b.Portals[p].Portal}");
-                }
-            }
-        }
-
-        var owners = new Dictionary<CellId, int>();
-        for (int i = 0; i < buildings.Count; i++)
-        {
-            var b = buildings[i];
-            var owner = new Building(b.Block, b.Origin, []).OwningCell();
-            if (!owner.IsNone)
-            {
-                r.Require(owners.TryAdd(owner, i), $"{at}.buildings[{i}].origin", $"land cell {owner} already holds building {owners.GetValueOrDefault(owner)} (a land cell holds at most one)");
-            }
-        }
+        r.Rules.References(at, declared, cells, unloadedCells, buildings);
 
         return new Scene([.. blocks.Select(b => b.Block)], buildings, cells)
         {
@@ -354,13 +282,9 @@ public static class SceneJson
 
     private sealed class Reader(string source)
     {
-        public void Require(bool ok, string path, string message)
-        {
-            if (!ok)
-            {
-                throw new SceneFormatException($"{source}: {path}: {message}");
-            }
-        }
+        public SceneRules Rules { get; } = new(source);
+
+        public void Require(bool ok, string path, string message) => Rules.Require(ok, path, message);
 
         public JsonElement Prop(JsonElement parent, string name, string at)
         {
@@ -376,7 +300,8 @@ public static class SceneJson
                 return [];
             }
 
-            Require(e.ValueKind == JsonValueKind.Array && e.GetArrayLength() <= MaxItems, $"{at}.{name}", $"expected an array of at most {MaxItems} items");
+            Require(e.ValueKind == JsonValueKind.Array, $"{at}.{name}", $"expected an array of at most {MaxItems} items");
+            Rules.Count(e.GetArrayLength(), $"{at}.{name}");
             return [.. e.EnumerateArray().Select((x, i) => (x, $"{at}.{name}[{i}]"))];
         }
 
@@ -396,7 +321,7 @@ public static class SceneJson
         {
             Require(e.ValueKind == JsonValueKind.String && CellIdText.TryParse(e.GetString()!, out var id), path, $"expected a cell id \"0x\" and 8 hex digits, got {Values.InputQuote.Json(e)}");
             CellIdText.TryParse(e.GetString()!, out var cell);
-            Require(cell.IsEnv, path, $"{cell} is not an env cell id (low word 0x0100..0xFFFD)");
+            Rules.EnvCell(cell, path);
             return cell;
         }
 
@@ -407,7 +332,7 @@ public static class SceneJson
                 && ushort.TryParse(text.AsSpan(2), NumberStyles.AllowHexSpecifier, CultureInfo.InvariantCulture, out _);
             Require(ok, path, $"expected a low word \"0x\" and 4 hex digits{(env ? string.Empty : " or \"outside\"")}, got {Values.InputQuote.Json(e)}");
             ushort v = ushort.Parse(text.AsSpan(2), NumberStyles.AllowHexSpecifier, CultureInfo.InvariantCulture);
-            Require(v is >= LandDefs.FirstEnvCellId and <= LandDefs.LastEnvCellId, path, $"0x{v:X4} is not an env cell low word (0x0100..0xFFFD)");
+            Rules.EnvLow(v, path);
             return v;
         }
 
@@ -464,8 +389,7 @@ public static class SceneJson
             Require(e.ValueKind == JsonValueKind.Object, path, "expected an object {\"n\": [x, y, z], \"d\": d}");
             var n = Vec(e, "n", path);
             float d = Number(Prop(e, "d", path), path + ".d");
-            Require(n.Length() > 1e-6f, path + ".n", $"degenerate plane: normal ({n.X}, {n.Y}, {n.Z}) has no direction");
-            Require(float.IsFinite(n.Length()), path + ".n", "non-finite plane normal (its length overflows)");
+            Rules.Normal(n, path);
             return new CellPlane(n, d);
         }
 
@@ -478,8 +402,7 @@ public static class SceneJson
             var origin = Vec(frame, "origin", at + ".frame");
             var q = Numbers(frame, "rotation", at + ".frame", 4);
             var rotation = new Quaternion(q[1], q[2], q[3], q[0]);
-            float length = rotation.Length();
-            Require(MathF.Abs(length - 1f) <= UnitTolerance, at + ".frame.rotation", $"quaternion (W, X, Y, Z) has length {length.ToString("R", CultureInfo.InvariantCulture)}, not 1 (±{UnitTolerance})");
+            Rules.UnitRotation(rotation, at + ".frame.rotation");
 
             var pieces = new List<ScenePiece>();
             var pieceItems = Items(c, "pieces", at, required: true);
@@ -538,19 +461,12 @@ public static class SceneJson
             {
                 var min = Vec(box, "min", at + ".box");
                 var max = Vec(box, "max", at + ".box");
-                Require(min.X < max.X && min.Y < max.Y && min.Z < max.Z, at + ".box", "degenerate box: min must be below max on every axis");
+                Rules.Box(min, max, at + ".box");
                 return ScenePiece.FromBox(min, max);
             }
 
             var planes = Items(p, "planes", at, required: true).Select(x => Plane(x.Item, x.Path)).ToList();
-            try
-            {
-                _ = new ConvexPiece(planes);
-            }
-            catch (ArgumentException e)
-            {
-                throw new SceneFormatException($"{source}: {at}.planes: {e.Message.Split(" (Parameter", 2)[0]}");
-            }
+            Rules.Convex(planes, at);
 
             return new ScenePiece(null, planes);
         }
