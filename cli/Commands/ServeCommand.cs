@@ -35,16 +35,17 @@ internal static class ServeCommand
         var noLoad = new Option<bool>("--no-load-scene") { Description = "Do not announce load_scene: every find_cell carries its whole scene (as a server without it)." };
         var noDat = new Option<bool>("--no-dat-records") { Description = "Announce load_scene without dat_records: scenes arrive as the project's JSON, not as retail dat records." };
         var noWalks = new Option<bool>("--no-walks") { Description = "Do not announce find_cell_walk: walks travel one query per round trip (as a server without it)." };
+        var noPipeline = new Option<bool>("--no-pipeline") { Description = "Do not announce pipeline: the tool waits for each answer before the next request (as a server without it)." };
         var announceRetail = new Option<bool>("--announce-retail")
         {
             Description = "Serve the --pick / --fidelity behaviour but announce retail in hello: a port deviating without declaring it (the suite must fail it; docs/facts-coverage.md).",
         };
-        var command = new Command("serve", "Serve the reference core over protocol v1 on stdin/stdout (docs/protocol.md); ends at end of input.") { fault, pick, fidelity, noLoad, noDat, noWalks, announceRetail };
-        command.SetAction(parse => Guard.Run("serve", () => Run(parse.GetValue(fault), parse.GetValue(pick), parse.GetValue(fidelity), parse.GetValue(noLoad), parse.GetValue(noDat), parse.GetValue(noWalks), parse.GetValue(announceRetail))));
+        var command = new Command("serve", "Serve the reference core over protocol v1 on stdin/stdout (docs/protocol.md); ends at end of input.") { fault, pick, fidelity, noLoad, noDat, noWalks, noPipeline, announceRetail };
+        command.SetAction(parse => Guard.Run("serve", () => Run(parse.GetValue(fault), parse.GetValue(pick), parse.GetValue(fidelity), parse.GetValue(noLoad), parse.GetValue(noDat), parse.GetValue(noWalks), parse.GetValue(noPipeline), parse.GetValue(announceRetail))));
         return command;
     }
 
-    private static int Run(string? faultId, string? pickName, string? fidelityNames, bool noLoadScene, bool noDatRecords, bool noWalks, bool announceRetail)
+    private static int Run(string? faultId, string? pickName, string? fidelityNames, bool noLoadScene, bool noDatRecords, bool noWalks, bool noPipeline, bool announceRetail)
     {
         if (!PickNames.TryParse(pickName, out var pick))
         {
@@ -87,7 +88,7 @@ internal static class ServeCommand
         int maxLine = Impl.LineLimitSetting.Read();
         using var input = Console.OpenStandardInput();
         using var output = new StreamWriter(Console.OpenStandardOutput(), new UTF8Encoding(false)) { NewLine = "\n" };
-        new ProtocolServer(impl) { LoadScenes = !noLoadScene, DatRecords = !noDatRecords, Walks = !noWalks }.Serve(input, output, maxLine);
+        new ProtocolServer(impl) { LoadScenes = !noLoadScene, DatRecords = !noDatRecords, Walks = !noWalks, Pipeline = !noPipeline }.Serve(input, output, maxLine);
         return ExitCodes.Ok;
     }
 }
