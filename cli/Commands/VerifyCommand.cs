@@ -239,6 +239,10 @@ internal static class VerifyCommand
             // How the pipelined transport fared (docs/protocol.md, "Pipelining"): a replayed run is one where an answer
             // differed from the reference's in the declared mode, so it was asked again where it differed.
             Console.Error.WriteLine($"verify: pipeline: {piped.PipelineCounts.Runs} invariant runs streamed, {piped.PipelineCounts.Replays} replayed from the first differing answer");
+            foreach (string why in piped.PipelineDifferences)
+            {
+                Console.Error.WriteLine("  differed: " + why);
+            }
         }
 
         report.WriteFiles(results, stopwatch.Elapsed);

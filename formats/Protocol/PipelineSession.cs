@@ -9,8 +9,9 @@ namespace AcPhys.Spec.Protocol;
 /// pass every query is answered at once with a guess (the reference in the implementation's declared mode) and streamed
 /// to the child without waiting; a reader thread takes the child's answers in order and compares each with its guess.
 /// When every answer equals its guess, the pass is what a live run gives (a run is a deterministic function of its
-/// answers). Otherwise the caller runs again in the replay pass: the queries before the first difference are answered
-/// with the same guesses (they were the child's answers), the one that differed with the child's answer, the rest live.
+/// answers). Otherwise the caller runs again: the queries before the first difference are answered with the same
+/// guesses (they were the child's answers), the one that differed with the child's answer, and the rest are guessed and
+/// streamed again — up to <see cref="MaxPasses"/> passes, after which the rest is asked live.
 /// </summary>
 /// <remarks>
 /// A query whose guess cannot be made (the reference threw, or the answer's optional fields are not known yet) is sent
@@ -20,21 +21,28 @@ namespace AcPhys.Spec.Protocol;
 /// </remarks>
 internal sealed class PipelineSession : IDisposable
 {
+    /// <summary>The most passes of one run: after as many differences the rest of the run is asked live.</summary>
+    public const int MaxPasses = 6;
+
     private readonly LineProcess child;
     private readonly TimeSpan timeout;
-    private readonly BlockingCollection<Sent> inFlight = [];
-    private readonly Thread reader;
     private readonly List<string> names = [];
     private readonly Dictionary<int, (string Request, string Line)> awaited = [];
+    private BlockingCollection<Sent> inFlight = [];
+    private Thread reader;
     private readonly HashSet<string> maybeLoaded;
     private readonly Lock sync = new();
     private int divergedAt = -1;
     private string? divergedRequest;
     private string? divergedLine;
     private AdapterFailureException? failure;
+    private AdapterFailureException? childFailure;
     private int next;
     private int building = -1;
     private long lastAnswer;
+    private int frontier;
+    private int liveFrom = int.MaxValue;
+    private int passes = 1;
 
     /// <summary>Initializes a new instance of the <see cref="PipelineSession"/> class and starts its reader.</summary>
     /// <param name="child">The child (its answers are read by this session's reader until <see cref="Finish"/>).</param>
@@ -49,11 +57,14 @@ internal sealed class PipelineSession : IDisposable
         reader.Start();
     }
 
-    /// <summary>Gets a value indicating whether this is the replay pass.</summary>
-    public bool Replaying { get; private set; }
+    /// <summary>Gets a value indicating whether the query being built is streamed (its scene loads then travel in the stream too).</summary>
+    public bool Streaming { get; private set; }
 
     /// <summary>Gets how many queries the speculative pass asked (for tests and the benchmark).</summary>
     public int Queries => names.Count;
+
+    /// <summary>Gets what differed first, for the report (the op, the request and the answer, cut), or null.</summary>
+    public string? Difference { get; private set; }
 
     private bool Diverged => Volatile.Read(ref divergedAt) >= 0;
 
@@ -68,7 +79,10 @@ internal sealed class PipelineSession : IDisposable
     public T Query<T>(string name, Func<string> request, Func<string, string, T> interpret, Func<T>? guess, Func<T> live)
     {
         int at = next++;
-        return Replaying ? Replay(at, name, interpret, guess, live) : Speculate(at, name, request, interpret, guess);
+        return at < frontier ? Known(at, name, interpret, guess)
+            : at == divergedAt ? Differed(interpret, live)
+            : at >= liveFrom ? Live(live)
+            : Speculate(at, name, request, interpret, guess);
     }
 
     /// <summary>Sends a scene load or unload within the speculative pass, answered at once with its guess.</summary>
@@ -107,7 +121,7 @@ internal sealed class PipelineSession : IDisposable
         return guess;
     }
 
-    /// <summary>Ends the speculative pass: waits for every answer still in flight.</summary>
+    /// <summary>Ends a pass: waits for every answer still in flight.</summary>
     /// <returns>True when every answer equalled its guess (the pass stands as the live run's).</returns>
     public bool Finish()
     {
@@ -116,19 +130,55 @@ internal sealed class PipelineSession : IDisposable
         return !Diverged;
     }
 
-    /// <summary>Starts the replay pass; first unloads every scene the child may hold (unless it failed), so scenes are loaded again on demand.</summary>
+    /// <summary>
+    /// Prepares the next pass after a difference: the differing answer becomes known, the queries after it are guessed
+    /// and streamed again (or asked live after <see cref="MaxPasses"/> passes, after a failed scene load, or after the
+    /// child failed). Every scene the child may hold is unloaded first (unless it failed), so scenes load again on demand.
+    /// </summary>
     /// <param name="unload">Unloads one id live (an error answer is ignored there).</param>
-    public void BeginReplay(Action<string> unload)
+    public void NextPass(Action<string> unload)
     {
-        Replaying = true;
+        int at = divergedAt;
+        passes++;
+        if (divergedLine is not null && failure is null)
+        {
+            awaited[at] = (divergedRequest!, divergedLine);
+            frontier = at + 1;
+        }
+        else
+        {
+            frontier = at; // the query asks again, live (Differed)
+        }
+
+        liveFrom = passes >= MaxPasses || failure is not null || divergedLine is null ? Math.Min(liveFrom, at + 1) : liveFrom;
+        if (divergedLine is not null && failure is null)
+        {
+            divergedAt = -1; // the difference is known now; the pass may find the next one
+        }
+
+        if (names.Count > frontier)
+        {
+            names.RemoveRange(frontier, names.Count - frontier);
+        }
+
         next = 0;
-        if (failure is null && !child.Dead)
+        if (childFailure is null && !child.Dead)
         {
             foreach (string id in maybeLoaded.Order(StringComparer.Ordinal))
             {
                 unload(id);
             }
         }
+
+        lock (sync)
+        {
+            maybeLoaded.Clear();
+        }
+
+        inFlight.Dispose();
+        inFlight = [];
+        reader = new Thread(Read) { IsBackground = true, Name = "acphys pipeline reader" };
+        reader.Start();
     }
 
     /// <inheritdoc/>
@@ -147,6 +197,7 @@ internal sealed class PipelineSession : IDisposable
         names.Add(name);
         int outer = building;
         building = at;
+        Streaming = true;
         string line;
         try
         {
@@ -155,6 +206,7 @@ internal sealed class PipelineSession : IDisposable
         finally
         {
             building = outer;
+            Streaming = false;
         }
 
         T value = default!;
@@ -202,27 +254,26 @@ internal sealed class PipelineSession : IDisposable
         return interpret(line, received);
     }
 
-    private T Replay<T>(int at, string name, Func<string, string, T> interpret, Func<T>? guess, Func<T> live)
+    // A query before the frontier: its answer is known (the child's answer equalled the guess, or was kept).
+    private T Known<T>(int at, string name, Func<string, string, T> interpret, Func<T>? guess)
     {
-        if (at > divergedAt)
+        if (names[at] != name)
         {
-            return live();
-        }
-
-        if (at >= names.Count || names[at] != name)
-        {
-            throw new InvalidOperationException($"the replay asked '{name}' as query {at}, the speculative pass '{(at < names.Count ? names[at] : "nothing")}': a run is not a deterministic function of its answers");
-        }
-
-        if (at == divergedAt)
-        {
-            return failure is not null ? throw failure
-                : divergedLine is not null ? interpret(divergedRequest!, divergedLine)
-                : live(); // a scene load or unload differed: the query asks again, live
+            throw new InvalidOperationException($"pass {passes} asked '{name}' as query {at}, the first pass '{names[at]}': a run is not a deterministic function of its answers");
         }
 
         return awaited.TryGetValue(at, out var kept) ? interpret(kept.Request, kept.Line) : guess!();
     }
+
+    // The query whose answer differed, when the difference is not an answer to replay: the child failed (it is
+    // reported as it failed), or a scene load or unload differed (the query asks again, live).
+    private T Differed<T>(Func<string, string, T> interpret, Func<T> live) =>
+        failure is not null ? throw failure
+        : divergedLine is not null ? interpret(divergedRequest!, divergedLine)
+        : Live(live);
+
+    // A child that failed in an earlier pass (hung, exited) is reported as it failed, not as "no longer running".
+    private T Live<T>(Func<T> live) => child.Dead && childFailure is not null ? throw childFailure : live();
 
     private void Send(Sent sent)
     {
@@ -248,6 +299,7 @@ internal sealed class PipelineSession : IDisposable
     {
         lock (sync)
         {
+            childFailure ??= failed;
             if (divergedAt >= 0 && divergedAt <= query)
             {
                 return;
@@ -255,6 +307,9 @@ internal sealed class PipelineSession : IDisposable
 
             divergedRequest = request;
             divergedLine = line;
+            Difference = failed is not null ? "the implementation failed: " + Wire.Brief(failed.Message, 160)
+                : line is null ? "a scene load or unload was not answered as guessed"
+                : $"{Wire.Brief(request!, 160)} was answered {Wire.Brief(line, 160)}";
             failure = failed;
             Volatile.Write(ref divergedAt, query);
         }

@@ -24,6 +24,7 @@ public sealed class ProcessAdapter : ICellPhysics, IDisposable
     private readonly Reported[] reported = [new(), new()]; // [0] open land, [1] scenes
     private PipelineSession? session;
     private int chosenIds;
+    private readonly List<string> differences = [];
 
     // Scenes are immutable records: serialise each once, however many steps of a walk query it.
     private static readonly ConditionalWeakTable<Scene, string> CompactScenes = [];
@@ -62,6 +63,9 @@ public sealed class ProcessAdapter : ICellPhysics, IDisposable
 
     /// <summary>Gets how many runs went through <see cref="Pipelined{T}"/> with the pipeline, and how many of them had to be replayed (an answer differed from its guess).</summary>
     public (int Runs, int Replays) PipelineCounts { get; private set; }
+
+    /// <summary>Gets, for the first few replayed runs, the answer that differed from its guess (why the run was replayed).</summary>
+    public IReadOnlyList<string> PipelineDifferences => differences;
 
     /// <summary>Gets the last lines the implementation wrote to stderr.</summary>
     public IReadOnlyList<string> StderrTail => child.StderrTail;
@@ -146,11 +150,12 @@ public sealed class ProcessAdapter : ICellPhysics, IDisposable
     /// announced <c>pipeline</c> without waiting for each answer: every query is answered at once with a guess (the
     /// reference in the declared mode) and streamed to the child, whose answers are compared as they arrive. When every
     /// answer equalled its guess, that result is the live run's; otherwise <paramref name="run"/> runs again with the
-    /// answers before the first difference replayed, the differing one as the child gave it, the rest live — the same
-    /// result as a live run (docs/protocol.md, "Pipelining"). Without <c>pipeline</c> it just runs.
+    /// answers before the first difference replayed, the differing one as the child gave it, and the rest guessed and
+    /// streamed again (live after a few differences) — the same result as a live run (docs/protocol.md, "Pipelining").
+    /// Without <c>pipeline</c> it just runs.
     /// </summary>
     /// <typeparam name="T">The run's result.</typeparam>
-    /// <param name="run">The run; called once, or twice when an answer differed (discard what the first call reported).</param>
+    /// <param name="run">The run; called again after each pass in which an answer differed (what an earlier call reported is to be discarded).</param>
     /// <returns>The result.</returns>
     /// <remarks>The adapter must be used from the calling thread only while it runs.</remarks>
     public T Pipelined<T>(Func<T> run)
@@ -170,32 +175,37 @@ public sealed class ProcessAdapter : ICellPhysics, IDisposable
         session = s;
         try
         {
-            T result = default!;
-            ExceptionDispatchInfo? thrown = null;
-            try
+            for (int pass = 1; ; pass++)
             {
-                result = run();
-            }
-            catch (Exception e) when (e is not OutOfMemoryException)
-            {
-                thrown = ExceptionDispatchInfo.Capture(e);
-            }
+                T result = default!;
+                ExceptionDispatchInfo? thrown = null;
+                try
+                {
+                    result = run();
+                }
+                catch (Exception e) when (e is not OutOfMemoryException)
+                {
+                    thrown = ExceptionDispatchInfo.Capture(e);
+                }
 
-            bool same = s.Finish();
-            PipelineCounts = (PipelineCounts.Runs + 1, PipelineCounts.Replays + (same ? 0 : 1));
-            if (same)
-            {
-                thrown?.Throw();
-                return result;
-            }
+                if (s.Finish())
+                {
+                    PipelineCounts = (PipelineCounts.Runs + 1, PipelineCounts.Replays + (pass > 1 ? 1 : 0));
+                    thrown?.Throw();
+                    return result;
+                }
 
-            s.BeginReplay(UnloadQuietly);
-            lock (loaded)
-            {
-                loaded.Clear();
-            }
+                if (differences.Count < 5 && s.Difference is { } why)
+                {
+                    differences.Add(why);
+                }
 
-            return run();
+                s.NextPass(UnloadQuietly);
+                lock (loaded)
+                {
+                    loaded.Clear();
+                }
+            }
         }
         finally
         {
@@ -492,7 +502,7 @@ public sealed class ProcessAdapter : ICellPhysics, IDisposable
         }
 
         string request = Request(name, fields);
-        return session is { Replaying: false } s
+        return session is { Streaming: true } s
             ? s.Transport(name, request, (r, answer) => Interpret(name, r, answer, read), guess, loads, unloads)
             : Live(name, request, read);
     }
