@@ -43,6 +43,7 @@ internal sealed class PipelineSession : IDisposable
     private int frontier;
     private int liveFrom = int.MaxValue;
     private int passes = 1;
+    private int divergedPass;
 
     /// <summary>Initializes a new instance of the <see cref="PipelineSession"/> class and starts its reader.</summary>
     /// <param name="child">The child (its answers are read by this session's reader until <see cref="Finish"/>).</param>
@@ -127,7 +128,7 @@ internal sealed class PipelineSession : IDisposable
     {
         inFlight.CompleteAdding();
         reader.Join();
-        return !Diverged;
+        return !(Diverged && divergedPass == passes); // a failure found in an earlier pass is final: this pass reported it
     }
 
     /// <summary>
@@ -268,7 +269,7 @@ internal sealed class PipelineSession : IDisposable
     // The query whose answer differed, when the difference is not an answer to replay: the child failed (it is
     // reported as it failed), or a scene load or unload differed (the query asks again, live).
     private T Differed<T>(Func<string, string, T> interpret, Func<T> live) =>
-        failure is not null ? throw failure
+        failure is not null ? throw childFailure ?? failure
         : divergedLine is not null ? interpret(divergedRequest!, divergedLine)
         : Live(live);
 
@@ -307,6 +308,7 @@ internal sealed class PipelineSession : IDisposable
 
             divergedRequest = request;
             divergedLine = line;
+            divergedPass = passes;
             Difference = failed is not null ? "the implementation failed: " + Wire.Brief(failed.Message, 160)
                 : line is null ? "a scene load or unload was not answered as guessed"
                 : $"{Wire.Brief(request!, 160)} was answered {Wire.Brief(line, 160)}";

@@ -243,7 +243,7 @@ public static class CatalogueRunner
             var result = invariant.Run(impl, profile.CasesPerInvariant, seed, maxClasses: maxClasses);
             if (profile.Exhaustive && result.Status == ResultStatus.Passed && fixedSeed is null && invariant is Invariant<LandCase> land)
             {
-                var sweep = Exhaustive.For(land, impl);
+                var sweep = impl is ProcessAdapter { Pipelines: true } piped ? piped.Pipelined(() => Exhaustive.For(land, impl)) : Exhaustive.For(land, impl); // --sweeps served: streamed too
                 if (sweep is not null)
                 {
                     result = result with
