@@ -37,6 +37,7 @@ internal sealed class PipelineSession : IDisposable
     private string? divergedLine;
     private AdapterFailureException? failure;
     private AdapterFailureException? childFailure;
+    private AdapterFailureException? sendFailure;
     private int next;
     private int building = -1;
     private long lastAnswer;
@@ -269,12 +270,12 @@ internal sealed class PipelineSession : IDisposable
     // The query whose answer differed, when the difference is not an answer to replay: the child failed (it is
     // reported as it failed), or a scene load or unload differed (the query asks again, live).
     private T Differed<T>(Func<string, string, T> interpret, Func<T> live) =>
-        failure is not null ? throw childFailure ?? failure
+        failure is not null ? throw childFailure ?? sendFailure ?? failure
         : divergedLine is not null ? interpret(divergedRequest!, divergedLine)
         : Live(live);
 
     // A child that failed in an earlier pass (hung, exited) is reported as it failed, not as "no longer running".
-    private T Live<T>(Func<T> live) => child.Dead && childFailure is not null ? throw childFailure : live();
+    private T Live<T>(Func<T> live) => child.Dead && (childFailure ?? sendFailure) is { } failed ? throw failed : live();
 
     private void Send(Sent sent)
     {
@@ -292,15 +293,17 @@ internal sealed class PipelineSession : IDisposable
         }
         catch (AdapterFailureException e)
         {
-            Diverge(sent.Query, null, null, e); // the reader then fails every answer still awaited
+            // The reader then fails every answer still awaited; what it saw first (a hang, an exit) is what is reported.
+            Diverge(sent.Query, null, null, e, primary: false);
         }
     }
 
-    private void Diverge(int query, string? request, string? line, AdapterFailureException? failed)
+    private void Diverge(int query, string? request, string? line, AdapterFailureException? failed, bool primary = true)
     {
         lock (sync)
         {
-            childFailure ??= failed;
+            childFailure ??= primary ? failed : null;
+            sendFailure ??= primary ? null : failed;
             if (divergedAt >= 0 && divergedAt <= query)
             {
                 return;
@@ -332,6 +335,7 @@ internal sealed class PipelineSession : IDisposable
                 }
 
                 long since = Math.Max(sent.At, lastAnswer);
+                bool failedBefore = child.Dead; // then a failed send said what happened, and this is only "no longer running"
                 string line;
                 try
                 {
@@ -340,7 +344,7 @@ internal sealed class PipelineSession : IDisposable
                 catch (AdapterFailureException e)
                 {
                     dead = true;
-                    Diverge(sent.Query, null, null, e);
+                    Diverge(sent.Query, null, null, e, primary: !failedBefore);
                     continue;
                 }
 
