@@ -130,11 +130,7 @@ public sealed class WalkWireTests
         string shrunk = Line(run.Out, "  shrunk     start ");
         string steps = shrunk[(shrunk.IndexOf("steps [", StringComparison.Ordinal) + 7)..].TrimEnd(']');
         Assert.True(steps.Split(';').Length <= 2, shrunk);
-        string replay = Line(run.Out, "  replay     acphys verify");
-        int at = replay.IndexOf("--seed ", StringComparison.Ordinal);
-        Assert.True(at > 0, replay);
-        string seed = replay[(at + 7)..].Split(' ')[0].Trim('\'', '"');
-        var again = Acphys.Run(["verify", "--impl-cmd", serve, "--only", "NO-BOUNDARY-FREEZE", "--seed", seed, "--timeout", "60"]);
+        var again = Acphys.Run(["verify", "--impl-cmd", serve, "--only", "NO-BOUNDARY-FREEZE", "--seed", ReplayOutput.Seed(run.Out), "--timeout", "60"]);
         Assert.True(again.Exit == 1, again.ToString());
         Assert.Contains(shrunk.Trim(), again.Out, StringComparison.Ordinal);
     }

@@ -4,6 +4,7 @@ using AcPhys.Cli.Diff;
 using AcPhys.Cli.Impl;
 using AcPhys.Spec.Adapters;
 using AcPhys.Spec.Invariants;
+using AcPhys.Spec.Protocol;
 using AcPhys.Spec.Running;
 using Spectre.Console;
 
@@ -89,7 +90,10 @@ internal static class DiffCommand
             {
                 foreach (var check in checks)
                 {
-                    results.Add(check.Run(impl, cases, fixedSeed ?? Seed.Derive(Spec.Running.Profile.Pr.BaseSeed!.Value, check.Id)));
+                    var seed = fixedSeed ?? Seed.Derive(Spec.Running.Profile.Pr.BaseSeed!.Value, check.Id);
+                    results.Add(impl is ProcessAdapter { Pipelines: true } piped
+                        ? piped.Pipelined(() => check.Run(impl, cases, seed)) // streamed, repeated where an answer differs (docs/protocol.md, "Pipelining")
+                        : check.Run(impl, cases, seed));
                     advance(check.Id);
                 }
             },

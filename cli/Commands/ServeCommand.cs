@@ -35,6 +35,7 @@ internal static class ServeCommand
         var noLoad = new Option<bool>("--no-load-scene") { Description = "Do not announce load_scene: every find_cell carries its whole scene (as a server without it)." };
         var noDat = new Option<bool>("--no-dat-records") { Description = "Announce load_scene without dat_records: scenes arrive as the project's JSON, not as retail dat records." };
         var noWalks = new Option<bool>("--no-walks") { Description = "Do not announce find_cell_walk: walks travel one query per round trip (as a server without it)." };
+        var noPipeline = new Option<bool>("--no-pipeline") { Description = "Do not announce pipeline: the tool waits for each answer before the next request (as a server without it)." };
         var announceRetail = new Option<bool>("--announce-retail")
         {
             Description = "Serve the --pick / --fidelity behaviour but announce retail in hello: a port deviating without declaring it (the suite must fail it; docs/facts-coverage.md).",
@@ -50,12 +51,12 @@ internal static class ServeCommand
             Description = "With --world-frame, convert with a planted shim bug: swapped-block-axes (the suite must fail it).",
             HelpName = "FAULT",
         };
-        var command = new Command("serve", "Serve the reference core over protocol v1 on stdin/stdout (docs/protocol.md); ends at end of input.") { fault, pick, fidelity, noLoad, noDat, noWalks, announceRetail, ops, worldFrame, worldFrameFault };
+        var command = new Command("serve", "Serve the reference core over protocol v1 on stdin/stdout (docs/protocol.md); ends at end of input.") { fault, pick, fidelity, noLoad, noDat, noWalks, noPipeline, announceRetail, ops, worldFrame, worldFrameFault };
         command.SetAction(parse => Guard.Run("serve", () => Run(
             parse.GetValue(fault),
             parse.GetValue(pick),
             parse.GetValue(fidelity),
-            (parse.GetValue(noLoad), parse.GetValue(noDat), parse.GetValue(noWalks), parse.GetValue(announceRetail)),
+            (parse.GetValue(noLoad), parse.GetValue(noDat), parse.GetValue(noWalks), parse.GetValue(noPipeline), parse.GetValue(announceRetail)),
             parse.GetValue(ops),
             (parse.GetValue(worldFrame), parse.GetValue(worldFrameFault)))));
         return command;
@@ -73,9 +74,9 @@ internal static class ServeCommand
         return ops | Op.LoadScene | Op.DatRecords | Op.FindCellWalk;
     }
 
-    private static int Run(string? faultId, string? pickName, string? fidelityNames, (bool NoLoadScene, bool NoDatRecords, bool NoWalks, bool AnnounceRetail) flags, string? opNames, (bool On, string? Fault) world)
+    private static int Run(string? faultId, string? pickName, string? fidelityNames, (bool NoLoadScene, bool NoDatRecords, bool NoWalks, bool NoPipeline, bool AnnounceRetail) flags, string? opNames, (bool On, string? Fault) world)
     {
-        var (noLoadScene, noDatRecords, noWalks, announceRetail) = flags;
+        var (noLoadScene, noDatRecords, noWalks, noPipeline, announceRetail) = flags;
         var frameFault = world.Fault switch
         {
             null => WorldFrameFault.None,
@@ -129,7 +130,7 @@ internal static class ServeCommand
         int maxLine = Impl.LineLimitSetting.Read();
         using var input = Console.OpenStandardInput();
         using var output = new StreamWriter(Console.OpenStandardOutput(), new UTF8Encoding(false)) { NewLine = "\n" };
-        new ProtocolServer(impl) { LoadScenes = !noLoadScene, DatRecords = !noDatRecords, Walks = !noWalks, InWorldFrame = world.On, FrameFault = frameFault }.Serve(input, output, maxLine);
+        new ProtocolServer(impl) { LoadScenes = !noLoadScene, DatRecords = !noDatRecords, Walks = !noWalks, Pipeline = !noPipeline, InWorldFrame = world.On, FrameFault = frameFault }.Serve(input, output, maxLine);
         return ExitCodes.Ok;
     }
 }

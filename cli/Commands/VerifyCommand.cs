@@ -5,6 +5,7 @@ using AcPhys.Cli.Verify;
 using AcPhys.Spec.Adapters;
 using AcPhys.Spec.Faults;
 using AcPhys.Spec.Invariants;
+using AcPhys.Spec.Protocol;
 using AcPhys.Spec.Running;
 
 namespace AcPhys.Cli.Commands;
@@ -233,6 +234,17 @@ internal static class VerifyCommand
         report.WriteFailures(results);
         FindingsText.Write(results);
         report.WriteSummary(results, stopwatch.Elapsed);
+        if (!settings.Quiet && impl is ProcessAdapter { Pipelines: true } piped)
+        {
+            // How the pipelined transport fared (docs/protocol.md, "Pipelining"): a replayed run is one where an answer
+            // differed from the reference's in the declared mode, so it was asked again where it differed.
+            Console.Error.WriteLine($"verify: pipeline: {piped.PipelineCounts.Runs} invariant runs streamed, {piped.PipelineCounts.Replays} replayed from the first differing answer");
+            foreach (string why in piped.PipelineDifferences)
+            {
+                Console.Error.WriteLine("  differed: " + why);
+            }
+        }
+
         report.WriteFiles(results, stopwatch.Elapsed);
         if (results.Any(r => r.Status == ResultStatus.Failed))
         {

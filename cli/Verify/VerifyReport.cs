@@ -199,7 +199,7 @@ internal sealed class VerifyReport(VerifySettings settings, ICellPhysics impl)
         if (unknown.Count > 0)
         {
             var run = new GateRun(impl.Name, settings, [], details, TimeSpan.Zero) { UnknownOps = unknown };
-            Terminal.Error("verify", $"warning: the implementation announced ops protocol v1 does not know: {run.UnknownOpsText} (ignored; known: {string.Join(", ", OpNames.Names(Op.All | Op.LoadScene | Op.DatRecords | Op.FindCellWalk))})");
+            Terminal.Error("verify", $"warning: the implementation announced ops protocol v1 does not know: {run.UnknownOpsText} (ignored; known: {string.Join(", ", OpNames.Names(Op.All | Op.LoadScene | Op.DatRecords | Op.FindCellWalk | Op.Pipeline))})");
         }
     }
 

@@ -58,6 +58,14 @@ public enum Op
     /// </summary>
     FindCellWalk = 1 << 13,
 
+    /// <summary>
+    /// <c>pipeline</c>: the implementation reads the next request while it answers the last, answers in request order,
+    /// takes a client-chosen <c>scene_id</c> in <c>load_scene</c>, and answers depend only on the request (and the scenes
+    /// loaded); the tool then streams requests without waiting for each answer (docs/protocol.md, "Pipelining"). A
+    /// transport capability, not an operation.
+    /// </summary>
+    Pipeline = 1 << 14,
+
     /// <summary>Every LandDefs operation.</summary>
     LandDefs = BlockIdToLcoord | GidToLcoord | LcoordToGid | InboundValidCellId | GetOutsideLcoord | AdjustToOutside,
 
@@ -66,7 +74,7 @@ public enum Op
 
     /// <summary>
     /// Every operation: <see cref="OpenLand"/> and scenes, all an invariant may need. <see cref="LoadScene"/>,
-    /// <see cref="DatRecords"/> and <see cref="FindCellWalk"/> are transports, not operations, so they are not in it.
+    /// <see cref="DatRecords"/>, <see cref="FindCellWalk"/> and <see cref="Pipeline"/> are transports, not operations, so they are not in it.
     /// </summary>
     All = OpenLand | FindCellScene | FindCellTransition,
 }
@@ -90,6 +98,7 @@ public static class OpNames
         (Op.LoadScene, "load_scene"),
         (Op.DatRecords, "dat_records"),
         (Op.FindCellWalk, "find_cell_walk"),
+        (Op.Pipeline, "pipeline"),
     ];
 
     /// <summary>Returns the protocol names of every flag set in <paramref name="ops"/>.</summary>

@@ -18,7 +18,8 @@ Seeded bugs, to see the suite catch a defect through the process protocol (--bug
     portal-side-inverted  a portal's PortalSide read backwards when adding a load hint (facts §5.4)
 
 --ops NAME[,NAME...] announces only some ops (a partial implementation: the rest is reported as not tested). Without
-find_cell_walk among them the tool sends walks one find_cell per step, as to an implementation written before the op.
+find_cell_walk among them the tool sends walks one find_cell per step, as to an implementation written before the op;
+without pipeline it waits for each answer before the next request.
 """
 
 import argparse
@@ -37,7 +38,8 @@ BLOCK_LENGTH = 192.0        # metres per landblock side
 EPSILON = struct.unpack("<f", struct.pack("<f", 0.0002))[0]   # facts §1.5, the float32 value of 0.0002f
 ALL_OPS = ["blockid_to_lcoord", "gid_to_lcoord", "lcoord_to_gid", "inbound_valid_cellid",
            "get_outside_lcoord", "adjust_to_outside", "outside_cells", "find_cell", "find_cell_walk",
-           "find_cell_scene", "find_cell_transition", "load_scene"]
+           "find_cell_scene", "find_cell_transition", "load_scene",
+           "pipeline"]          # answers depend on the request alone: the tool may send the next before this is answered
 BUGS = ("clamp-106", "trunc-floor", "portal-side-inverted")
 
 

@@ -284,8 +284,13 @@ class Scenes:
     def load(self, request):
         if "scene" not in request:
             raise SceneError("load_scene takes a scene as JSON (dat_records is not offered)")
-        scene_id = "s%d" % self.next
-        self.next += 1
+        scene_id = request.get("scene_id")
+        if scene_id is None:
+            scene_id = "s%d" % self.next
+            self.next += 1
+        elif not isinstance(scene_id, str) or scene_id in self.loaded:
+            # pipeline: the tool chose the id (docs/protocol.md, "Pipelining"); it must be new.
+            raise SceneError("scene_id %r is not a new string" % (scene_id,))
         self.loaded[scene_id] = Scene(request["scene"], self.land, self.bug)
         return {"scene_id": scene_id}
 

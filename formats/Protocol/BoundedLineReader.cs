@@ -37,6 +37,9 @@ public sealed class BoundedLineReader
     /// <summary>Gets the most bytes of one line.</summary>
     public int MaxBytes { get; }
 
+    /// <summary>Gets a value indicating whether a whole line is already buffered, so the next read returns without waiting for input.</summary>
+    public bool HasBufferedLine => !skipping && end > start && Array.IndexOf(buffer, (byte)'\n', start, end - start) >= 0;
+
     /// <summary>Reads the next line.</summary>
     /// <returns>The line without its end, or null at end of input.</returns>
     /// <exception cref="LineTooLongException">The line is longer than <see cref="MaxBytes"/>; the next call reads the line after it.</exception>

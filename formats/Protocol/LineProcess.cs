@@ -107,6 +107,9 @@ internal sealed class LineProcess : IDisposable
         return child;
     }
 
+    /// <summary>Gets a value indicating whether the child failed earlier (it is not spoken to again).</summary>
+    public bool Dead => dead;
+
     /// <summary>Sends one line and waits for one answer line.</summary>
     /// <param name="request">The request line.</param>
     /// <param name="what">What the request is, for messages (the op name).</param>
@@ -114,6 +117,16 @@ internal sealed class LineProcess : IDisposable
     /// <returns>The answer line.</returns>
     /// <exception cref="AdapterFailureException">The child exited, closed its stdout or did not answer in time.</exception>
     public string Exchange(string request, string what, TimeSpan timeout)
+    {
+        Send(request, what);
+        return Receive(what, request, timeout);
+    }
+
+    /// <summary>Sends one line without waiting for its answer (a pipelined request; <see cref="Receive"/> reads the answers in order).</summary>
+    /// <param name="request">The request line.</param>
+    /// <param name="what">What the request is, for messages (the op name).</param>
+    /// <exception cref="AdapterFailureException">The child failed earlier or its stdin is closed.</exception>
+    public void Send(string request, string what)
     {
         if (dead)
         {
@@ -128,13 +141,28 @@ internal sealed class LineProcess : IDisposable
         {
             throw Died($"could not send '{what}' (the pipe is closed)", e);
         }
+    }
+
+    /// <summary>Waits for the next answer line. One thread at a time may receive; another may <see cref="Send"/> meanwhile.</summary>
+    /// <param name="what">What the request answered is, for messages (the op name).</param>
+    /// <param name="request">The request line (or its first characters), for messages.</param>
+    /// <param name="timeout">How long an answer may take (--timeout), for messages.</param>
+    /// <param name="wait">How long to wait now (what is left of <paramref name="timeout"/> for a pipelined answer); null waits <paramref name="timeout"/>.</param>
+    /// <returns>The answer line.</returns>
+    /// <exception cref="AdapterFailureException">The child exited, closed its stdout or did not answer in time.</exception>
+    public string Receive(string what, string request, TimeSpan timeout, TimeSpan? wait = null)
+    {
+        if (dead)
+        {
+            throw new AdapterFailureException($"'{commandLine}' is no longer running (it failed earlier)");
+        }
 
         var reader = answers!;
         pending ??= reader.ReadLineAsync().AsTask(); // asynchronous: no pool thread blocks while the child thinks
         bool answered;
         try
         {
-            answered = pending.Wait(timeout);
+            answered = pending.Wait(wait is { } w ? (w < TimeSpan.Zero ? TimeSpan.Zero : w) : timeout);
         }
         catch (AggregateException e) when (e.InnerException is LineTooLongException tooLong)
         {

@@ -1,4 +1,5 @@
 using System.Runtime.CompilerServices;
+using System.Runtime.ExceptionServices;
 using System.Text.Json;
 using AcPhys.Core;
 using AcPhys.Spec.Adapters;
@@ -19,6 +20,11 @@ public sealed class ProcessAdapter : ICellPhysics, IDisposable
     private const int KeptScenes = 8;
     private readonly Lock gate = new();
     private readonly List<(Scene Scene, string Id)> loaded = [];
+    private readonly Lazy<ICellPhysics> guesser;
+    private readonly Reported[] reported = [new(), new()]; // [0] open land, [1] scenes
+    private PipelineSession? session;
+    private int chosenIds;
+    private readonly List<string> differences = [];
 
     // Scenes are immutable records: serialise each once, however many steps of a walk query it.
     private static readonly ConditionalWeakTable<Scene, string> CompactScenes = [];
@@ -31,6 +37,7 @@ public sealed class ProcessAdapter : ICellPhysics, IDisposable
         Ops = ops;
         Pick = pick;
         UnknownOps = unknownOps;
+        guesser = new(() => new ReferenceAdapter(Pick, outdoor: Outdoor) { Indoor = Indoor });
     }
 
     /// <inheritdoc/>
@@ -53,6 +60,15 @@ public sealed class ProcessAdapter : ICellPhysics, IDisposable
 
     /// <summary>Gets op names the implementation announced that protocol v1 does not know (ignored).</summary>
     public IReadOnlyList<string> UnknownOps { get; }
+
+    /// <summary>Gets a value indicating whether the implementation announced <c>pipeline</c>: <see cref="Pipelined{T}"/> then speculates and streams.</summary>
+    public bool Pipelines => (Ops & Op.Pipeline) != 0;
+
+    /// <summary>Gets how many runs went through <see cref="Pipelined{T}"/> with the pipeline, and how many of them had to be replayed (an answer differed from its guess).</summary>
+    public (int Runs, int Replays) PipelineCounts { get; private set; }
+
+    /// <summary>Gets, for the first few replayed runs, the answer that differed from its guess (why the run was replayed).</summary>
+    public IReadOnlyList<string> PipelineDifferences => differences;
 
     /// <summary>Gets the last lines the implementation wrote to stderr.</summary>
     public IReadOnlyList<string> StderrTail => child.StderrTail;
@@ -138,11 +154,92 @@ public sealed class ProcessAdapter : ICellPhysics, IDisposable
         }
     }
 
-    /// <inheritdoc/>
-    public bool BlockIdToLcoord(CellId id, out Lcoord lcoord) => LcoordAnswer(Op.BlockIdToLcoord, w => Wire.WriteCell(w, "cell", id), out lcoord);
+    /// <summary>
+    /// Runs <paramref name="run"/> (one invariant's whole run: its cases, shrinking and re-checks) against a child that
+    /// announced <c>pipeline</c> without waiting for each answer: every query is answered at once with a guess (the
+    /// reference in the declared mode) and streamed to the child, whose answers are compared as they arrive. When every
+    /// answer equalled its guess, that result is the live run's; otherwise <paramref name="run"/> runs again with the
+    /// answers before the first difference replayed, the differing one as the child gave it, and the rest guessed and
+    /// streamed again (live after a few differences) — the same result as a live run (docs/protocol.md, "Pipelining").
+    /// Without <c>pipeline</c> it just runs.
+    /// </summary>
+    /// <typeparam name="T">The run's result.</typeparam>
+    /// <param name="run">The run; called again after each pass in which an answer differed (what an earlier call reported is to be discarded).</param>
+    /// <returns>The result.</returns>
+    /// <remarks>The adapter must be used from the calling thread only while it runs.</remarks>
+    public T Pipelined<T>(Func<T> run)
+    {
+        if (!Pipelines || session is not null)
+        {
+            return run();
+        }
+
+        List<string> ids;
+        lock (loaded)
+        {
+            ids = [.. loaded.Select(e => e.Id)];
+        }
+
+        using var s = new PipelineSession(child, timeout, ids);
+        session = s;
+        try
+        {
+            for (int pass = 1; ; pass++)
+            {
+                T result = default!;
+                ExceptionDispatchInfo? thrown = null;
+                try
+                {
+                    result = run();
+                }
+                catch (Exception e) when (e is not OutOfMemoryException)
+                {
+                    thrown = ExceptionDispatchInfo.Capture(e);
+                }
+
+                if (s.Finish())
+                {
+                    PipelineCounts = (PipelineCounts.Runs + 1, PipelineCounts.Replays + (pass > 1 ? 1 : 0));
+                    thrown?.Throw();
+                    return result;
+                }
+
+                if (differences.Count < 5 && s.Difference is { } why)
+                {
+                    differences.Add(why);
+                }
+
+                s.NextPass(UnloadQuietly);
+                lock (loaded)
+                {
+                    loaded.Clear();
+                }
+            }
+        }
+        finally
+        {
+            session = null;
+        }
+    }
+
+    // After a difference: the child may hold scenes the first pass loaded; an unknown id is no finding here.
+    private void UnloadQuietly(string id)
+    {
+        try
+        {
+            Live("unload_scene", Request("unload_scene", w => w.WriteString("scene_id", id)), a => Wire.ReadBool(a, "ok"));
+        }
+        catch (ImplementationErrorException)
+        {
+            // Not loaded after all (its load was refused): nothing to unload.
+        }
+    }
 
     /// <inheritdoc/>
-    public bool GidToLcoord(CellId id, out Lcoord lcoord) => LcoordAnswer(Op.GidToLcoord, w => Wire.WriteCell(w, "cell", id), out lcoord);
+    public bool BlockIdToLcoord(CellId id, out Lcoord lcoord) => LcoordAnswer(Op.BlockIdToLcoord, w => Wire.WriteCell(w, "cell", id), r => (r.BlockIdToLcoord(id, out var l), l.X, l.Y), out lcoord);
+
+    /// <inheritdoc/>
+    public bool GidToLcoord(CellId id, out Lcoord lcoord) => LcoordAnswer(Op.GidToLcoord, w => Wire.WriteCell(w, "cell", id), r => (r.GidToLcoord(id, out var l), l.X, l.Y), out lcoord);
 
     /// <inheritdoc/>
     public CellId LcoordToGid(int x, int y) => Call(
@@ -152,10 +249,11 @@ public sealed class ProcessAdapter : ICellPhysics, IDisposable
             w.WriteNumber("x", x);
             w.WriteNumber("y", y);
         },
-        a => Wire.ReadCell(a, "cell"));
+        a => Wire.ReadCell(a, "cell"),
+        r => r.LcoordToGid(x, y));
 
     /// <inheritdoc/>
-    public bool InboundValidCellId(CellId id) => Call(Op.InboundValidCellId, w => Wire.WriteCell(w, "cell", id), a => Wire.ReadBool(a, "ok"));
+    public bool InboundValidCellId(CellId id) => Call(Op.InboundValidCellId, w => Wire.WriteCell(w, "cell", id), a => Wire.ReadBool(a, "ok"), r => r.InboundValidCellId(id));
 
     /// <inheritdoc/>
     public bool GetOutsideLcoord(CellId id, float x, float y, out Lcoord lcoord) => LcoordAnswer(
@@ -166,6 +264,7 @@ public sealed class ProcessAdapter : ICellPhysics, IDisposable
             Wire.WriteFloat(w, "x", x);
             Wire.WriteFloat(w, "y", y);
         },
+        r => (r.GetOutsideLcoord(id, x, y, out var l), l.X, l.Y),
         out lcoord);
 
     /// <inheritdoc/>
@@ -177,7 +276,8 @@ public sealed class ProcessAdapter : ICellPhysics, IDisposable
             Wire.WriteFloat(w, "x", x);
             Wire.WriteFloat(w, "y", y);
         },
-        a => new AdjustResult(Wire.ReadBool(a, "ok"), Wire.ReadCell(a, "cell"), Wire.ReadFloat(a, "x"), Wire.ReadFloat(a, "y")));
+        a => new AdjustResult(Wire.ReadBool(a, "ok"), Wire.ReadCell(a, "cell"), Wire.ReadFloat(a, "x"), Wire.ReadFloat(a, "y")),
+        r => r.AdjustToOutside(id, x, y));
 
     /// <inheritdoc/>
     public IReadOnlyList<CellId> OutsideCells(CellId cell, IReadOnlyList<Sphere> spheres) => OutsideCells(cell, System.Numerics.Vector3.Zero, spheres);
@@ -191,7 +291,8 @@ public sealed class ProcessAdapter : ICellPhysics, IDisposable
             Wire.WriteSpheres(w, "spheres", spheres);
             Wire.WriteOrigin(w, origin, spheres);
         },
-        a => Wire.ReadCells(a, "cells"));
+        a => Wire.ReadCells(a, "cells"),
+        r => r.OutsideCells(cell, origin, spheres));
 
     /// <inheritdoc/>
     public FindCellResult FindCell(CellId cell, IReadOnlyList<Sphere> spheres, CellId current) => FindCell(cell, System.Numerics.Vector3.Zero, spheres, current);
@@ -202,7 +303,7 @@ public sealed class ProcessAdapter : ICellPhysics, IDisposable
         {
             FindCellFields(w, null, cell, spheres, current);
             Wire.WriteOrigin(w, origin, spheres);
-        }, ReadFindCell);
+        }, a => Learn(Wire.ReadFindCell(a), false), r => Project(r.FindCell(cell, origin, spheres, current), false));
 
     /// <summary>
     /// <c>find_cell</c> with a scene: the scene travels as its compact JSON (docs/protocol.md, "Scenes") and is
@@ -216,7 +317,7 @@ public sealed class ProcessAdapter : ICellPhysics, IDisposable
     public FindCellResult FindCell(Scene? scene, CellId cell, IReadOnlyList<Sphere> spheres, CellId current) =>
         scene is null
             ? FindCell(cell, spheres, current)
-            : Call(Op.FindCellScene, "find_cell", w => FindCellFields(w, scene, cell, spheres, current), ReadFindCell);
+            : Call(Op.FindCellScene, "find_cell", w => FindCellFields(w, scene, cell, spheres, current), a => Learn(Wire.ReadFindCell(a), true), r => Project(r.FindCell(scene, cell, spheres, current), true));
 
     /// <summary><c>find_cell</c> with <c>"load_cells": true</c> (a movement transition, no visibility filter), for an implementation that announced <c>find_cell_transition</c>.</summary>
     /// <param name="scene">The scene, or null for open land.</param>
@@ -232,7 +333,7 @@ public sealed class ProcessAdapter : ICellPhysics, IDisposable
             {
                 FindCellFields(w, scene, cell, spheres, current);
                 w.WriteBoolean("load_cells", true);
-            }, ReadFindCell);
+            }, a => Learn(Wire.ReadFindCell(a), scene is not null), r => Project(r.FindCell(scene, cell, spheres, current, true), scene is not null));
 
     /// <summary>
     /// <c>find_cell_walk</c>: the whole walk in one round trip when the implementation announced it (docs/protocol.md,
@@ -257,7 +358,8 @@ public sealed class ProcessAdapter : ICellPhysics, IDisposable
                 SceneField(w, walk.Scene);
                 WalkWire.WriteFields(w, walk);
             },
-            a => WalkWire.ReadAnswer(a, walk.Queries));
+            a => LearnAll(WalkWire.ReadAnswer(a, walk.Queries), walk.Scene is not null),
+            r => ProjectAll(r.FindCellWalk(walk), walk.Scene is not null));
     }
 
     private void FindCellFields(Utf8JsonWriter w, Scene? scene, CellId cell, IReadOnlyList<Sphere> spheres, CellId current)
@@ -292,8 +394,6 @@ public sealed class ProcessAdapter : ICellPhysics, IDisposable
         }
     }
 
-    private static FindCellResult ReadFindCell(JsonElement a) => Wire.ReadFindCell(a);
-
     // The scene as its compact JSON, serialised once per scene instance.
     private static void WriteScene(Utf8JsonWriter w, Scene scene)
     {
@@ -302,7 +402,8 @@ public sealed class ProcessAdapter : ICellPhysics, IDisposable
     }
 
     // load_scene once per scene: the most recent few stay loaded (a walk, its translated copy, a shrink step's
-    // neighbours), the oldest is unloaded to make room.
+    // neighbours), the oldest is unloaded to make room. To a pipelining child the tool chooses the id (docs/protocol.md,
+    // "Pipelining"), so a find_cell can name a scene whose load is still in flight.
     private string SceneId(Scene scene)
     {
         lock (loaded)
@@ -320,14 +421,19 @@ public sealed class ProcessAdapter : ICellPhysics, IDisposable
             {
                 string old = loaded[0].Id;
                 loaded.RemoveAt(0);
-                Call(Op.LoadScene, "unload_scene", w => w.WriteString("scene_id", old), a => Wire.ReadBool(a, "ok"));
+                Transport("unload_scene", w => w.WriteString("scene_id", old), a => Wire.ReadBool(a, "ok"), true, null, old);
             }
 
-            string id = Call(
-                Op.LoadScene,
+            string? chosen = Pipelines ? "t" + (++chosenIds).ToString(System.Globalization.CultureInfo.InvariantCulture) : null;
+            string id = Transport(
                 "load_scene",
                 w =>
                 {
+                    if (chosen is not null)
+                    {
+                        w.WriteString("scene_id", chosen);
+                    }
+
                     if ((Ops & Op.DatRecords) != 0)
                     {
                         DatWire.WriteScene(w, "dat", scene);
@@ -337,7 +443,12 @@ public sealed class ProcessAdapter : ICellPhysics, IDisposable
                         WriteScene(w, scene);
                     }
                 },
-                a => Wire.ReadString(a, "scene_id"));
+                a => Wire.ReadString(a, "scene_id") is var answered && (chosen is null || answered == chosen)
+                    ? answered
+                    : throw new WireException($"load_scene answered scene_id \"{Wire.Brief(answered, 40)}\" for the id \"{chosen}\" the tool chose (a pipelining implementation keeps the client's id)"),
+                chosen ?? string.Empty,
+                chosen,
+                null);
             loaded.Add((scene, id));
             return id;
         }
@@ -347,7 +458,8 @@ public sealed class ProcessAdapter : ICellPhysics, IDisposable
     public IReadOnlyList<CellId> OutsideCellsParts(IReadOnlyList<Part> parts) => Call(
         Op.OutsideCellsParts,
         w => PartWire.WriteParts(w, "parts", parts),
-        a => Wire.ReadCells(a, "cells"));
+        a => Wire.ReadCells(a, "cells"),
+        r => r.OutsideCellsParts(parts));
 
     /// <inheritdoc/>
     public void Dispose() => child.Dispose();
@@ -368,46 +480,117 @@ public sealed class ProcessAdapter : ICellPhysics, IDisposable
         }
     }
 
-    private bool LcoordAnswer(Op op, Action<Utf8JsonWriter> fields, out Lcoord lcoord)
+    private bool LcoordAnswer(Op op, Action<Utf8JsonWriter> fields, Func<ICellPhysics, (bool, int, int)> guess, out Lcoord lcoord)
     {
-        var (ok, x, y) = Call(op, fields, a => (Wire.ReadBool(a, "ok"), Wire.ReadInt(a, "x"), Wire.ReadInt(a, "y")));
+        var (ok, x, y) = Call(op, fields, a => (Wire.ReadBool(a, "ok"), Wire.ReadInt(a, "x"), Wire.ReadInt(a, "y")), guess);
         lcoord = new Lcoord(x, y);
         return ok;
     }
 
-    private T Call<T>(Op op, Action<Utf8JsonWriter> fields, Func<JsonElement, T> read) => Call(op, OpNames.Names(op)[0], fields, read);
+    private T Call<T>(Op op, Action<Utf8JsonWriter> fields, Func<JsonElement, T> read, Func<ICellPhysics, T> guess) => Call(op, OpNames.Names(op)[0], fields, read, guess);
 
-    private T Call<T>(Op op, string name, Action<Utf8JsonWriter> fields, Func<JsonElement, T> read)
+    // One query: live (a round trip), or within a pipelined run (Pipelined) guessed and streamed.
+    private T Call<T>(Op op, string name, Action<Utf8JsonWriter> fields, Func<JsonElement, T> read, Func<ICellPhysics, T> guess)
     {
         if ((Ops & op) == 0)
         {
             throw new NotSupportedException($"{Name} does not offer {OpNames.Names(op)[0]}");
         }
 
+        return session is { } s
+            ? s.Query(name, () => Request(name, fields), (request, answer) => Interpret(name, request, answer, read), () => guess(guesser.Value), () => Live(name, Request(name, fields), read))
+            : Live(name, Request(name, fields), read);
+    }
+
+    // A scene load or unload: transport, streamed within a pipelined run's first pass, live otherwise.
+    private T Transport<T>(string name, Action<Utf8JsonWriter> fields, Func<JsonElement, T> read, T guess, string? loads, string? unloads)
+    {
+        if ((Ops & Op.LoadScene) == 0)
+        {
+            throw new NotSupportedException($"{Name} does not offer load_scene");
+        }
+
+        string request = Request(name, fields);
+        return session is { Streaming: true } s
+            ? s.Transport(name, request, (r, answer) => Interpret(name, r, answer, read), guess, loads, unloads)
+            : Live(name, request, read);
+    }
+
+    // Every request line, streamed or awaited; a world-frame child gets its points in world coordinates (WorldFrame).
+    private string Request(string name, Action<Utf8JsonWriter> fields)
+    {
         string request = Wire.Line(w =>
         {
             w.WriteString("op", name);
             fields(w);
         });
-        request = InWorldFrame ? WorldFrame.ToWorld(request) : request;
+        return InWorldFrame ? WorldFrame.ToWorld(request) : request;
+    }
 
+    private T Live<T>(string name, string request, Func<JsonElement, T> read)
+    {
         lock (gate)
         {
-            string answer = child.Exchange(request, name, timeout);
-            using var doc = ParseAnswer(answer, name, Name);
-            if (doc.RootElement.TryGetProperty("error", out var error))
-            {
-                throw new ImplementationErrorException($"{name} answered error {ErrorText(error)}");
-            }
+            return Interpret(name, request, child.Exchange(request, name, timeout), read);
+        }
+    }
 
-            try
-            {
-                return read(doc.RootElement);
-            }
-            catch (WireException e)
-            {
-                throw new AdapterFailureException($"'{Name}' answered '{name}' with something that is not protocol v1: {e.Message}. Request: {Wire.Brief(request, 200)} Answer: {Wire.Brief(answer, 200)}", e);
-            }
+    // An answer line as a call reads it: the value, a finding ({"error": ...}) or a protocol failure (exit 2).
+    private T Interpret<T>(string name, string request, string answer, Func<JsonElement, T> read)
+    {
+        using var doc = ParseAnswer(answer, name, Name);
+        if (doc.RootElement.TryGetProperty("error", out var error))
+        {
+            throw new ImplementationErrorException($"{name} answered error {ErrorText(error)}");
+        }
+
+        try
+        {
+            return read(doc.RootElement);
+        }
+        catch (WireException e)
+        {
+            throw new AdapterFailureException($"'{Name}' answered '{name}' with something that is not protocol v1: {e.Message}. Request: {Wire.Brief(request, 200)} Answer: {Wire.Brief(answer, 200)}", e);
+        }
+    }
+
+    // The optional find_cell fields (loaded, hits_interior_cell) a child reports are learnt from its first answer, on
+    // open land and in scenes apart; a guess carries only those, since the answer read from the child has only those.
+    private FindCellResult Learn(FindCellResult answer, bool scene)
+    {
+        reported[scene ? 1 : 0].Learn(answer);
+        return answer;
+    }
+
+    private IReadOnlyList<FindCellResult> LearnAll(IReadOnlyList<FindCellResult> answers, bool scene)
+    {
+        if (answers.Count > 0)
+        {
+            Learn(answers[0], scene);
+        }
+
+        return answers;
+    }
+
+    private FindCellResult Project(FindCellResult guess, bool scene) => reported[scene ? 1 : 0].Project(guess);
+
+    private FindCellResult[] ProjectAll(IReadOnlyList<FindCellResult> guesses, bool scene) => [.. guesses.Select(g => Project(g, scene))];
+
+    // Which optional fields a child's find_cell answers carry: unknown until its first answer (a guess cannot be made
+    // before, so that query is asked and awaited), then fixed.
+    private sealed class Reported
+    {
+        private int state = -1; // -1 unknown; else bit 0: loaded, bit 1: hits_interior_cell
+
+        public void Learn(FindCellResult answer) =>
+            Interlocked.CompareExchange(ref state, (answer.Loaded is null ? 0 : 1) | (answer.HitsInteriorCell is null ? 0 : 2), -1);
+
+        public FindCellResult Project(FindCellResult guess)
+        {
+            int known = Volatile.Read(ref state);
+            return known < 0
+                ? throw new InvalidOperationException("the implementation's optional find_cell fields are not known yet")
+                : guess with { Loaded = (known & 1) != 0 ? guess.Loaded : null, HitsInteriorCell = (known & 2) != 0 ? guess.HitsInteriorCell : null };
         }
     }
 }

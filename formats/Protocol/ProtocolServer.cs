@@ -15,6 +15,9 @@ public sealed class ProtocolServer(ICellPhysics impl)
     /// <summary>How many scenes a client may hold loaded at once (it unloads to make room).</summary>
     public const int MaxLoadedScenes = 64;
 
+    /// <summary>The longest scene id a client may choose.</summary>
+    public const int MaxSceneIdLength = 64;
+
     private readonly Dictionary<string, Scene> loadedScenes = [];
     private int nextSceneId;
 
@@ -38,20 +41,29 @@ public sealed class ProtocolServer(ICellPhysics impl)
     /// <summary>Gets or initializes a planted bug of that conversion (the suite must fail it).</summary>
     public WorldFrameFault FrameFault { get; init; }
 
+    /// <summary>Gets or initializes a value indicating whether the server announces <c>pipeline</c> (true by default; false serves as an older server would: it chooses every scene id itself).</summary>
+    public bool Pipeline { get; init; } = true;
+
     /// <summary>Reads requests until end of input, answering each on its own line.</summary>
     /// <param name="input">Requests, UTF-8 lines.</param>
-    /// <param name="output">Answers (flushed after each).</param>
+    /// <param name="output">Answers (flushed whenever no further request is waiting in the input buffer).</param>
     /// <param name="maxLineBytes">The most bytes of one request line (<see cref="LineLimit"/>); a longer one gets an error answer naming the limit and is skipped unread.</param>
     public void Serve(Stream input, TextWriter output, int maxLineBytes = BoundedLineReader.DefaultMaxBytes)
     {
         var reader = new BoundedLineReader(input, maxLineBytes);
         while (true)
         {
+            if (!reader.HasBufferedLine)
+            {
+                output.Flush(); // before any wait for input; a pipelining client's requests already here are answered first, together
+            }
+
             string answer;
             try
             {
                 if (reader.ReadLine() is not string line)
                 {
+                    output.Flush();
                     return;
                 }
 
@@ -68,7 +80,6 @@ public sealed class ProtocolServer(ICellPhysics impl)
             }
 
             output.WriteLine(answer);
-            output.Flush();
         }
     }
 
@@ -322,6 +333,8 @@ public sealed class ProtocolServer(ICellPhysics impl)
             return Error($"scenes not served by {impl.Name} (it offers neither find_cell_scene nor find_cell_transition)");
         }
 
+        // A pipelining client names the scene itself (docs/protocol.md, "Pipelining"); an older server ignores the field.
+        string? chosen = Pipeline && request.TryGetProperty("scene_id", out _) ? ChosenId(request) : null;
         var scene = request.TryGetProperty("dat", out var dat) ? DatWire.ReadScene(dat) : ReadScene(Wire.Field(request, "scene"));
         lock (loadedScenes)
         {
@@ -330,10 +343,23 @@ public sealed class ProtocolServer(ICellPhysics impl)
                 return Error($"{MaxLoadedScenes} scenes already loaded: unload_scene one first");
             }
 
-            string id = "s" + (++nextSceneId).ToString(System.Globalization.CultureInfo.InvariantCulture);
+            string id = chosen ?? "s" + (++nextSceneId).ToString(System.Globalization.CultureInfo.InvariantCulture);
+            if (loadedScenes.ContainsKey(id))
+            {
+                return Error($"scene_id \"{Wire.Brief(id, 40)}\" is already loaded: unload_scene it first");
+            }
+
             loadedScenes[id] = scene;
             return Wire.Line(w => w.WriteString("scene_id", id));
         }
+    }
+
+    private static string ChosenId(JsonElement request)
+    {
+        string id = Wire.ReadString(request, "scene_id");
+        return id.Length is > 0 and <= MaxSceneIdLength
+            ? id
+            : throw new WireException($"field \"scene_id\": 1 to {MaxSceneIdLength} characters, got {id.Length}");
     }
 
     private Scene ReadScene(JsonElement field)
@@ -368,7 +394,8 @@ public sealed class ProtocolServer(ICellPhysics impl)
             w.WriteNumber("protocol", Wire.Version);
             w.WriteString("name", impl.Name);
             w.WriteStartArray("ops");
-            var ops = impl.Ops & ~(Op.LoadScene | Op.DatRecords | Op.FindCellWalk);
+            var ops = impl.Ops & ~(Op.LoadScene | Op.DatRecords | Op.FindCellWalk | Op.Pipeline);
+            ops |= Pipeline ? Op.Pipeline : Op.None; // answers depend on the request alone; scene ids may be the client's
             ops |= Walks && !InWorldFrame && (ops & (Op.FindCell | SceneQueryKinds.Either)) != 0 ? Op.FindCellWalk : Op.None; // threaded here (WalkThread)
             if (LoadScenes && SceneQueryKinds.OffersScenes(ops))
             {

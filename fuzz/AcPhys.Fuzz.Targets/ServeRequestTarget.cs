@@ -13,7 +13,9 @@ namespace AcPhys.Fuzz.Targets;
 /// <see cref="ProtocolServer"/> over the reference core (<see cref="ProtocolServer.AnswerChecked"/>), as
 /// <c>acphys serve</c> reads them. A bad request must be answered with <c>{"error": ...}</c>; any exception that
 /// escapes is a bug (the server would answer "internal error"), and so is an answer that is not one JSON object.
-/// Several lines let a campaign reach <c>load_scene</c> followed by <c>find_cell</c> on the loaded scene.
+/// Several lines let a campaign reach <c>load_scene</c> followed by <c>find_cell</c> on the loaded scene, and the
+/// pipelined forms (docs/protocol.md, "Pipelining"): a load naming its own <c>scene_id</c>, the same id loaded twice,
+/// requests that name a scene before or after its load.
 /// </summary>
 public sealed class ServeRequestTarget : FuzzTarget
 {
@@ -24,7 +26,7 @@ public sealed class ServeRequestTarget : FuzzTarget
     [
         "\"op\"", "\"hello\"", "\"protocol\"", "\"blockid_to_lcoord\"", "\"gid_to_lcoord\"", "\"lcoord_to_gid\"", "\"inbound_valid_cellid\"",
         "\"get_outside_lcoord\"", "\"adjust_to_outside\"", "\"outside_cells\"", "\"find_cell\"", "\"find_cell_scene\"", "\"outside_cells_parts\"",
-        "\"load_scene\"", "\"unload_scene\"", "\"scene_id\"", "\"s1\"", "\"scene\"", "\"dat\"", "\"manifest\"", "\"records\"", "\"cell\"",
+        "\"load_scene\"", "\"unload_scene\"", "\"scene_id\"", "\"s1\"", "\"pipeline\"", "\"t1\"", "\"scene\"", "\"dat\"", "\"manifest\"", "\"records\"", "\"cell\"",
         "\"current\"", "\"load_cells\"", "\"find_cell_walk\"", "\"origin\"", "\"body\"", "\"steps\"", "\"spheres\"", "\"parts\"", "\"x\"", "\"y\"", "\"z\"", "\"r\"", "\"0x7F7F0001\"", "\"0xFFFF0100\"",
         "\"NaN\"", "\"Infinity\"", "\"-Infinity\"", "null", "true", "false", "1e39", "-0", "2147483648", "\\u0000", "\\ud800",
         "[", "]", "{", "}", ":", ",", "\n",
@@ -88,6 +90,29 @@ public sealed class ServeRequestTarget : FuzzTarget
             Wire.WriteSpheres(w, "spheres", body);
             w.WriteNull("current");
         });
+
+        string LoadWithId(string id, Action<Utf8JsonWriter> scene) => Wire.Line(w =>
+        {
+            w.WriteString("op", "load_scene");
+            w.WriteString("scene_id", id);
+            scene(w);
+        });
+        string SceneWalk(string id, Vector2[] steps, bool loadCells) => Wire.Line(w =>
+        {
+            w.WriteString("op", "find_cell_walk");
+            w.WriteString("scene_id", id);
+            WalkWire.WriteFields(w, new WalkRequest(cottage, cell, new Vector3(50, 60, 0), body, steps) { LoadCells = loadCells });
+        });
+        static string Unload(string id) => Wire.Line(w =>
+        {
+            w.WriteString("op", "unload_scene");
+            w.WriteString("scene_id", id);
+        });
+        static void SceneField(Utf8JsonWriter w, Scene scene)
+        {
+            w.WritePropertyName("scene");
+            w.WriteRawValue(SceneJson.WriteCompact(scene));
+        }
 
         var lines = new Dictionary<string, string>
         {
@@ -170,6 +195,15 @@ public sealed class ServeRequestTarget : FuzzTarget
                     w.WriteString("op", "unload_scene");
                     w.WriteString("scene_id", "s1");
                 })),
+            ["pipelined-client-ids"] = string.Join(
+                '\n',
+                SceneWalk("t1", [new Vector2(3, 0)], false), // named before its load: unknown
+                LoadWithId("t1", w => DatWire.WriteScene(w, "dat", cottage)),
+                LoadWithId("t1", w => SceneField(w, cottage)), // the same id again: refused
+                FindCell(w => w.WriteString("scene_id", "t1")),
+                SceneWalk("t1", [new Vector2(3, 0), new Vector2(0, 3)], true),
+                Unload("t1"),
+                LoadWithId(string.Empty, w => SceneField(w, cottage))), // an empty id: refused
             ["not-an-object"] = "[1,2,3]",
         };
         return lines.ToDictionary(kv => kv.Key, kv => Encoding.UTF8.GetBytes(kv.Value));

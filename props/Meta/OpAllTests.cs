@@ -7,7 +7,7 @@ namespace AcPhys.Props.Meta;
 public sealed class OpAllTests
 {
     /// <summary>Transports of a scene, not operations an invariant needs (Op.cs).</summary>
-    private const Op Transports = Op.LoadScene | Op.DatRecords | Op.FindCellWalk;
+    private const Op Transports = Op.LoadScene | Op.DatRecords | Op.FindCellWalk | Op.Pipeline;
 
     [Fact(DisplayName = "OP-ALL: Op.All holds every single operation flag but the scene transports")]
     public void All_HoldsEveryOperationFlag()

@@ -16,7 +16,7 @@ namespace RecordAdapter;
 internal sealed class Server
 {
     private const int MaxScenes = 16;
-    private const string HelloAnswer = """{"protocol":1,"name":"record-adapter (example)","ops":["find_cell_scene","find_cell_transition","load_scene","dat_records","find_cell_walk"],"pick":"retail"}""";
+    private const string HelloAnswer = """{"protocol":1,"name":"record-adapter (example)","ops":["find_cell_scene","find_cell_transition","load_scene","dat_records","find_cell_walk","pipeline"],"pick":"retail"}""";
     private static readonly JsonWriterOptions Compact = new() { Encoder = JavaScriptEncoder.UnsafeRelaxedJsonEscaping };
 
     private readonly Dictionary<string, CellScene> scenes = new(StringComparer.Ordinal);
@@ -137,8 +137,13 @@ internal sealed class Server
             return Error("load_scene: invalid dat records: " + e.Message);
         }
 
-        string id = "r" + (++loads).ToString(System.Globalization.CultureInfo.InvariantCulture);
-        scenes.Add(id, scene);
+        // pipeline (docs/protocol.md, "Pipelining"): the tool may choose the id, so it can ask before this answer arrives.
+        string id = request.TryGetProperty("scene_id", out _) ? Text(request, "scene_id") : "r" + (++loads).ToString(System.Globalization.CultureInfo.InvariantCulture);
+        if (!scenes.TryAdd(id, scene))
+        {
+            return Error($"load_scene: scene_id \"{id}\" is already loaded");
+        }
+
         return Line(w => w.WriteString("scene_id", id));
     }
 

@@ -1,0 +1,386 @@
+using System.Collections.Concurrent;
+using System.Diagnostics;
+using AcPhys.Spec.Adapters;
+
+namespace AcPhys.Spec.Protocol;
+
+/// <summary>
+/// One speculative run against a child that announced <c>pipeline</c> (docs/protocol.md, "Pipelining"). In the first
+/// pass every query is answered at once with a guess (the reference in the implementation's declared mode) and streamed
+/// to the child without waiting; a reader thread takes the child's answers in order and compares each with its guess.
+/// When every answer equals its guess, the pass is what a live run gives (a run is a deterministic function of its
+/// answers). Otherwise the caller runs again: the queries before the first difference are answered with the same
+/// guesses (they were the child's answers), the one that differed with the child's answer, and the rest are guessed and
+/// streamed again — up to <see cref="MaxPasses"/> passes, after which the rest is asked live.
+/// </summary>
+/// <remarks>
+/// A query whose guess cannot be made (the reference threw, or the answer's optional fields are not known yet) is sent
+/// and awaited within the pass, and its answer kept for the replay. Scene loads and unloads travel in the stream too
+/// (client-chosen ids); they are transport, not queries, so the replay pass never replays them: after a difference every
+/// scene the child may hold is unloaded and loaded again on demand.
+/// </remarks>
+internal sealed class PipelineSession : IDisposable
+{
+    /// <summary>The most passes of one run: after as many differences the rest of the run is asked live.</summary>
+    public const int MaxPasses = 6;
+
+    private readonly LineProcess child;
+    private readonly TimeSpan timeout;
+    private readonly List<string> names = [];
+    private readonly Dictionary<int, (string Request, string Line)> awaited = [];
+    private BlockingCollection<Sent> inFlight = [];
+    private Thread reader;
+    private readonly HashSet<string> maybeLoaded;
+    private readonly Lock sync = new();
+    private int divergedAt = -1;
+    private string? divergedRequest;
+    private string? divergedLine;
+    private AdapterFailureException? failure;
+    private AdapterFailureException? childFailure;
+    private AdapterFailureException? sendFailure;
+    private int next;
+    private int building = -1;
+    private long lastAnswer;
+    private int frontier;
+    private int liveFrom = int.MaxValue;
+    private int passes = 1;
+    private int divergedPass;
+
+    /// <summary>Initializes a new instance of the <see cref="PipelineSession"/> class and starts its reader.</summary>
+    /// <param name="child">The child (its answers are read by this session's reader until <see cref="Finish"/>).</param>
+    /// <param name="timeout">The most one answer may take, counted from its request or the previous answer, whichever is later.</param>
+    /// <param name="loadedIds">The scene ids the child holds now.</param>
+    public PipelineSession(LineProcess child, TimeSpan timeout, IEnumerable<string> loadedIds)
+    {
+        this.child = child;
+        this.timeout = timeout;
+        maybeLoaded = [.. loadedIds];
+        reader = new Thread(Read) { IsBackground = true, Name = "acphys pipeline reader" };
+        reader.Start();
+    }
+
+    /// <summary>Gets a value indicating whether the query being built is streamed (its scene loads then travel in the stream too).</summary>
+    public bool Streaming { get; private set; }
+
+    /// <summary>Gets how many queries the speculative pass asked (for tests and the benchmark).</summary>
+    public int Queries => names.Count;
+
+    /// <summary>Gets what differed first, for the report (the op, the request and the answer, cut), or null.</summary>
+    public string? Difference { get; private set; }
+
+    private bool Diverged => Volatile.Read(ref divergedAt) >= 0;
+
+    /// <summary>Asks one query (not a scene load or unload) in the current pass.</summary>
+    /// <typeparam name="T">The answer type.</typeparam>
+    /// <param name="name">The op name (for messages and the replay's check).</param>
+    /// <param name="request">Builds the request line (it may load a scene first).</param>
+    /// <param name="interpret">Reads an answer line to the request as the live call does: the value, or the exception it throws.</param>
+    /// <param name="guess">The speculated answer, or null when none can be made.</param>
+    /// <param name="live">The live call, for the replay pass after the first difference.</param>
+    /// <returns>The answer.</returns>
+    public T Query<T>(string name, Func<string> request, Func<string, string, T> interpret, Func<T>? guess, Func<T> live)
+    {
+        int at = next++;
+        return at < frontier ? Known(at, name, interpret, guess)
+            : at == divergedAt ? Differed(interpret, live)
+            : at >= liveFrom ? Live(live)
+            : Speculate(at, name, request, interpret, guess);
+    }
+
+    /// <summary>Sends a scene load or unload within the speculative pass, answered at once with its guess.</summary>
+    /// <typeparam name="T">The answer type.</typeparam>
+    /// <param name="name">The op name.</param>
+    /// <param name="request">The request line.</param>
+    /// <param name="interpret">Reads the answer line.</param>
+    /// <param name="guess">The answer a conforming child gives (its id echoed, or ok).</param>
+    /// <param name="loads">The id the request loads, or null.</param>
+    /// <param name="unloads">The id the request unloads, or null.</param>
+    /// <returns>The guess.</returns>
+    public T Transport<T>(string name, string request, Func<string, string, T> interpret, T guess, string? loads, string? unloads)
+    {
+        if (loads is not null)
+        {
+            lock (sync)
+            {
+                maybeLoaded.Add(loads);
+            }
+        }
+
+        int owner = building >= 0 ? building : next;
+        Send(new Sent(owner, name, request, true, line =>
+        {
+            bool same = SameAnswer.Of(interpret(request, line), guess);
+            if (same && unloads is not null)
+            {
+                lock (sync)
+                {
+                    maybeLoaded.Remove(unloads);
+                }
+            }
+
+            return same;
+        }));
+        return guess;
+    }
+
+    /// <summary>Ends a pass: waits for every answer still in flight.</summary>
+    /// <returns>True when every answer equalled its guess (the pass stands as the live run's).</returns>
+    public bool Finish()
+    {
+        inFlight.CompleteAdding();
+        reader.Join();
+        return !(Diverged && divergedPass == passes); // a failure found in an earlier pass is final: this pass reported it
+    }
+
+    /// <summary>
+    /// Prepares the next pass after a difference: the differing answer becomes known, the queries after it are guessed
+    /// and streamed again (or asked live after <see cref="MaxPasses"/> passes, after a failed scene load, or after the
+    /// child failed). Every scene the child may hold is unloaded first (unless it failed), so scenes load again on demand.
+    /// </summary>
+    /// <param name="unload">Unloads one id live (an error answer is ignored there).</param>
+    public void NextPass(Action<string> unload)
+    {
+        int at = divergedAt;
+        passes++;
+        if (divergedLine is not null && failure is null)
+        {
+            awaited[at] = (divergedRequest!, divergedLine);
+            frontier = at + 1;
+        }
+        else
+        {
+            frontier = at; // the query asks again, live (Differed)
+        }
+
+        liveFrom = passes >= MaxPasses || failure is not null || divergedLine is null ? Math.Min(liveFrom, at + 1) : liveFrom;
+        if (divergedLine is not null && failure is null)
+        {
+            divergedAt = -1; // the difference is known now; the pass may find the next one
+        }
+
+        if (names.Count > frontier)
+        {
+            names.RemoveRange(frontier, names.Count - frontier);
+        }
+
+        next = 0;
+        if (childFailure is null && !child.Dead)
+        {
+            foreach (string id in maybeLoaded.Order(StringComparer.Ordinal))
+            {
+                unload(id);
+            }
+        }
+
+        lock (sync)
+        {
+            maybeLoaded.Clear();
+        }
+
+        inFlight.Dispose();
+        inFlight = [];
+        reader = new Thread(Read) { IsBackground = true, Name = "acphys pipeline reader" };
+        reader.Start();
+    }
+
+    /// <inheritdoc/>
+    public void Dispose()
+    {
+        if (!inFlight.IsAddingCompleted)
+        {
+            Finish();
+        }
+
+        inFlight.Dispose();
+    }
+
+    private T Speculate<T>(int at, string name, Func<string> request, Func<string, string, T> interpret, Func<T>? guess)
+    {
+        names.Add(name);
+        int outer = building;
+        building = at;
+        Streaming = true;
+        string line;
+        try
+        {
+            line = request();
+        }
+        finally
+        {
+            building = outer;
+            Streaming = false;
+        }
+
+        T value = default!;
+        bool guessed = false;
+        if (guess is not null)
+        {
+            try
+            {
+                value = guess();
+                guessed = true;
+            }
+            catch (Exception e) when (e is not OutOfMemoryException)
+            {
+                // No guess for this one: ask it and wait below.
+            }
+        }
+
+        if (guessed)
+        {
+            Send(new Sent(at, name, line, false, answer => SameAnswer.Of(interpret(line, answer), value)));
+            return value;
+        }
+
+        if (Diverged)
+        {
+            throw new InvalidOperationException("speculative pass abandoned after a difference"); // the pass is discarded
+        }
+
+        // Asked and awaited within the pass: the reader hands the answer over in order.
+        using var done = new ManualResetEventSlim();
+        string? received = null;
+        Send(new Sent(at, name, line, false, answer =>
+        {
+            received = answer;
+            return true;
+        })
+        { Done = done });
+        done.Wait();
+        if (received is null)
+        {
+            throw (Exception?)failure ?? new InvalidOperationException("speculative pass abandoned after a difference");
+        }
+
+        awaited[at] = (line, received);
+        return interpret(line, received);
+    }
+
+    // A query before the frontier: its answer is known (the child's answer equalled the guess, or was kept).
+    private T Known<T>(int at, string name, Func<string, string, T> interpret, Func<T>? guess)
+    {
+        if (names[at] != name)
+        {
+            throw new InvalidOperationException($"pass {passes} asked '{name}' as query {at}, the first pass '{names[at]}': a run is not a deterministic function of its answers");
+        }
+
+        return awaited.TryGetValue(at, out var kept) ? interpret(kept.Request, kept.Line) : guess!();
+    }
+
+    // The query whose answer differed, when the difference is not an answer to replay: the child failed (it is
+    // reported as it failed), or a scene load or unload differed (the query asks again, live).
+    private T Differed<T>(Func<string, string, T> interpret, Func<T> live) =>
+        failure is not null ? throw childFailure ?? sendFailure ?? failure
+        : divergedLine is not null ? interpret(divergedRequest!, divergedLine)
+        : Live(live);
+
+    // A child that failed in an earlier pass (hung, exited) is reported as it failed, not as "no longer running".
+    private T Live<T>(Func<T> live) => child.Dead && (childFailure ?? sendFailure) is { } failed ? throw failed : live();
+
+    private void Send(Sent sent)
+    {
+        if (Diverged)
+        {
+            sent.Done?.Set();
+            return; // nothing more is sent after a difference: the pass is discarded
+        }
+
+        sent.At = Stopwatch.GetTimestamp();
+        inFlight.Add(sent);
+        try
+        {
+            child.Send(sent.Request, sent.Name);
+        }
+        catch (AdapterFailureException e)
+        {
+            // The reader then fails every answer still awaited; what it saw first (a hang, an exit) is what is reported.
+            Diverge(sent.Query, null, null, e, primary: false);
+        }
+    }
+
+    private void Diverge(int query, string? request, string? line, AdapterFailureException? failed, bool primary = true)
+    {
+        lock (sync)
+        {
+            childFailure ??= primary ? failed : null;
+            sendFailure ??= primary ? null : failed;
+            if (divergedAt >= 0 && divergedAt <= query)
+            {
+                return;
+            }
+
+            divergedRequest = request;
+            divergedLine = line;
+            divergedPass = passes;
+            Difference = failed is not null ? "the implementation failed: " + Wire.Brief(failed.Message, 160)
+                : line is null ? "a scene load or unload was not answered as guessed"
+                : $"{Wire.Brief(request!, 160)} was answered {Wire.Brief(line, 160)}";
+            failure = failed;
+            Volatile.Write(ref divergedAt, query);
+        }
+    }
+
+    // The reader: one answer per sent request, in order, each within the timeout of its request or the previous
+    // answer; after a difference the answers are still read (the stream stays aligned) but not compared.
+    private void Read()
+    {
+        bool dead = false;
+        foreach (var sent in inFlight.GetConsumingEnumerable())
+        {
+            try
+            {
+                if (dead)
+                {
+                    continue;
+                }
+
+                long since = Math.Max(sent.At, lastAnswer);
+                bool failedBefore = child.Dead; // then a failed send said what happened, and this is only "no longer running"
+                string line;
+                try
+                {
+                    line = child.Receive(sent.Name, sent.Request, timeout, timeout - Stopwatch.GetElapsedTime(since));
+                }
+                catch (AdapterFailureException e)
+                {
+                    dead = true;
+                    Diverge(sent.Query, null, null, e, primary: !failedBefore);
+                    continue;
+                }
+
+                lastAnswer = Stopwatch.GetTimestamp();
+                if (Diverged && sent.Done is null)
+                {
+                    continue;
+                }
+
+                bool same;
+                try
+                {
+                    same = sent.Matches(line);
+                }
+                catch (Exception e) when (e is not OutOfMemoryException)
+                {
+                    same = false; // an error answer or one that is not protocol v1: the replay reads it as the live call would
+                }
+
+                if (!same)
+                {
+                    Diverge(sent.Query, sent.IsTransport ? null : sent.Request, sent.IsTransport ? null : line, null);
+                }
+            }
+            finally
+            {
+                sent.Done?.Set();
+            }
+        }
+    }
+
+    // A request in flight: what it is, when it was sent, and how its answer is compared.
+    private sealed record Sent(int Query, string Name, string Request, bool IsTransport, Func<string, bool> Matches)
+    {
+        public long At { get; set; }
+
+        public ManualResetEventSlim? Done { get; init; }
+    }
+}
