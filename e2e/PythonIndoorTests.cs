@@ -20,7 +20,7 @@ public sealed class PythonIndoorTests
     {
         var run = Acphys.Run(["verify", "--impl-cmd", Acphys.PythonExample, "--only", SceneInvariants, "--cases", "40", "--timeout", "60"]);
         Assert.True(run.Exit == 0, run.ToString());
-        Assert.Contains("offers blockid_to_lcoord, gid_to_lcoord, lcoord_to_gid, inbound_valid_cellid, get_outside_lcoord, adjust_to_outside, outside_cells, find_cell, find_cell_scene, find_cell_transition, load_scene, find_cell_walk;", run.Out, StringComparison.Ordinal);
+        Assert.Contains("offers blockid_to_lcoord, gid_to_lcoord, lcoord_to_gid, inbound_valid_cellid, get_outside_lcoord, adjust_to_outside, outside_cells, find_cell, find_cell_scene, find_cell_transition, load_scene, find_cell_walk, pipeline;", run.Out, StringComparison.Ordinal);
         Assert.Contains("verify: 17 invariants, 15 passed, 0 failed, 2 not tested", run.Out, StringComparison.Ordinal);
         Assert.Contains("NOT TESTED HYSTERESIS-INDOOR: applies to the current-first pick", run.Out, StringComparison.Ordinal);
     }
