@@ -62,7 +62,10 @@ public sealed class ProcessAdapter : ICellPhysics, IDisposable
     public IReadOnlyList<string> UnknownOps { get; }
 
     /// <summary>Gets a value indicating whether the implementation announced <c>pipeline</c>: <see cref="Pipelined{T}"/> then speculates and streams.</summary>
-    public bool Pipelines => (Ops & Op.Pipeline) != 0;
+    /// <remarks>Not for a world-frame child: its unposable points (UnposableQueryException) are thrown after the pipeline
+    /// has counted the query, which pairs later answers with the wrong queries (false failures, seen at base seed
+    /// 7700123001); until the pipeline skips such a query, a world-frame child is asked query by query, as its walks are.</remarks>
+    public bool Pipelines => (Ops & Op.Pipeline) != 0 && !InWorldFrame;
 
     /// <summary>Gets how many runs went through <see cref="Pipelined{T}"/> with the pipeline, and how many of them had to be replayed (an answer differed from its guess).</summary>
     public (int Runs, int Replays) PipelineCounts { get; private set; }
