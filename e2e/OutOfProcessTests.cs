@@ -67,6 +67,18 @@ public sealed class OutOfProcessTests
     }
 
     [RequiresPythonFact]
+    public void PythonExampleAnswersEveryPipelinedQueryAsTheReference()
+    {
+        // Its land test rounds as retail's float32 point_in_poly2D (facts §5.5), so every streamed answer equals the
+        // reference's guess and no run is repeated (with a plain closed-square test, 2 of 42 runs were repeated at
+        // 400 cases: a centre 1e-7 m west of a cell edge, inside by float32 rounding).
+        const string Outdoor = "blockid_to_lcoord,gid_to_lcoord,lcoord_to_gid,inbound_valid_cellid,get_outside_lcoord,adjust_to_outside,outside_cells,find_cell,find_cell_walk,pipeline";
+        var run = Acphys.Run(["verify", "--impl-cmd", Acphys.PythonExample + " --ops " + Outdoor, "--cases", "400", "--timeout", "60"]);
+        Assert.True(run.Exit == 0, run.ToString());
+        Assert.Contains("invariant runs streamed, 0 replayed from the first differing answer", run.Err, StringComparison.Ordinal);
+    }
+
+    [RequiresPythonFact]
     public void PythonClampBugIsCaughtThroughTheProtocolWithAShrunkWalk()
     {
         var run = Acphys.Run(

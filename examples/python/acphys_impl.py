@@ -47,10 +47,13 @@ class BadRequest(Exception):
     """A request this implementation cannot read."""
 
 
+_F32 = struct.Struct("<f")
+
+
 def f32(v):
     """Rounds a Python float (a double) to the nearest float32, as a float32 operation in C would."""
     try:
-        return struct.unpack("<f", struct.pack("<f", v))[0]
+        return _F32.unpack(_F32.pack(v))[0]
     except OverflowError:
         return math.copysign(math.inf, v)
 
@@ -250,10 +253,37 @@ def outside_cells(position, spheres, origin=(0.0, 0.0)):
     return cells
 
 
+def cuts_sw_to_ne(gx, gy):
+    """facts §5.6: the cell's diagonal, from its global lcoord in unsigned 32-bit wrap-around arithmetic."""
+    s = (gy * (214614067 * gx + 1813693831) - 1109124029 * gx - 1369149221) & 0xFFFFFFFF
+    return s >= 0x80000000
+
+
+def rejects(prev, cur, px, py):
+    """point_in_poly2D's edge test, side Positive (facts §5.5): the float32 cross (cur - prev) x (p - cur) > 0."""
+    ax, ay = f32(cur[0] - prev[0]), f32(cur[1] - prev[1])
+    bx, by = f32(px - cur[0]), f32(py - cur[1])
+    return f32(f32(ax * by) - f32(ay * bx)) > 0.0
+
+
+def in_triangle(v0, v1, v2, px, py):
+    """point_in_poly2D walks the edges v0->v2, v2->v1, v1->v0 (facts §5.5)."""
+    return not rejects(v0, v2, px, py) and not rejects(v2, v1, px, py) and not rejects(v1, v0, px, py)
+
+
 def land_square_contains(cell, px, py):
+    """facts §5.5: a land cell contains p when either terrain triangle does, each test rounded to float32 as retail's.
+    Up to rounding that is the closed 24 m square; the rounding decides points within an ulp or so of an edge."""
+    if not (math.isfinite(px) and math.isfinite(py)):
+        return False
     index = low(cell) - 1
-    west, south = CELL_LENGTH * (index >> 3), CELL_LENGTH * (index & 7)
-    return west <= px <= west + CELL_LENGTH and south <= py <= south + CELL_LENGTH   # closed squares
+    cx, cy = index >> 3, index & 7
+    west, south = CELL_LENGTH * cx, CELL_LENGTH * cy
+    sw, se = (west, south), (west + CELL_LENGTH, south)
+    nw, ne = (west, south + CELL_LENGTH), (west + CELL_LENGTH, south + CELL_LENGTH)
+    if cuts_sw_to_ne(block_x(cell) * 8 + cx, block_y(cell) * 8 + cy):
+        return in_triangle(sw, se, ne, px, py) or in_triangle(sw, ne, nw, px, py)
+    return in_triangle(sw, se, nw, px, py) or in_triangle(ne, nw, se, px, py)
 
 
 def find_cell(position, spheres, origin=(0.0, 0.0)):
@@ -386,19 +416,59 @@ def main():
 
     print("acphys_impl.py: protocol %d, ops %s%s" % (PROTOCOL, ",".join(ops), ", seeded bug " + BUG if BUG else ""),
           file=sys.stderr, flush=True)
-    while True:
-        line = sys.stdin.readline()      # one line at a time: never wait for more input than one request
-        if not line:
-            break                        # end of input: the tool is done
+    encode = json.JSONEncoder(allow_nan=False).encode   # made once: json.dumps with an option builds one per call
+    requests = Requests(sys.stdin, sys.stdout.buffer)
+    for line in requests:
         if not line.strip():
             continue
         try:
-            reply = answer(json.loads(line), ops)
+            reply = answer(json.loads(line.decode("utf-8")), ops)
         except (BadRequest, KeyError, TypeError, ValueError) as e:
             reply = {"error": "bad request: %s: %s" % (type(e).__name__, e)}
-        sys.stdout.write(json.dumps(reply, allow_nan=False) + "\n")
-        sys.stdout.flush()
+        requests.answer(encode(reply))
 
+
+class Requests:
+    """The request lines on stdin (bytes, newline removed), and the answers queued for stdout.
+
+    Answers are written when no whole request is waiting: a tool that waits for each answer gets it at once (the
+    queue is flushed before every blocking read), and a tool that streams (op pipeline) gets many answers per write
+    instead of one system call and one pipe wake-up per answer. A read never waits for more than what is there.
+    """
+    def __init__(self, raw_in, out):
+        self._in, self._sink, self._out = raw_in.fileno(), out, []
+
+    def __iter__(self):
+        buf, at, partial = b"", 0, []        # buf[at:] is unread; partial holds the start of a line still coming
+        while True:
+            cut = buf.find(b"\n", at)
+            if cut >= 0:
+                line = buf[at:cut]
+                at = cut + 1
+                if partial:
+                    partial.append(line)
+                    line = b"".join(partial)
+                    partial = []
+                yield line
+                continue
+            if at < len(buf):
+                partial.append(buf[at:])
+            self.flush()
+            buf, at = os.read(self._in, 1 << 16), 0
+            if not buf:                          # end of input: the tool is done
+                if partial:
+                    yield b"".join(partial)
+                self.flush()
+                return
+
+    def answer(self, text):
+        self._out.append(text)
+
+    def flush(self):
+        if self._out:
+            self._sink.write(("\n".join(self._out) + "\n").encode("utf-8"))
+            self._sink.flush()
+            self._out.clear()
 
 BUG = None
 SCENES = None
