@@ -32,6 +32,17 @@ public sealed class WorldFrameTests
         Assert.Contains("FAIL FIND-CELL-CONFORMANCE", run.Out, StringComparison.Ordinal);
     }
 
+    [Fact(DisplayName = "WORLD-FRAME-PIPELINE: a world-frame child is pipelined, and a point it cannot be sent (not judged) pairs no later answer with the wrong query")]
+    public void UnposablePointsDoNotShiftPipelinedAnswers()
+    {
+        // Base seed 7700123001 draws adjust_to_outside and LandDefs points within 61 µm of a block line: each such case
+        // is refused before it is counted (ProcessAdapter.RefuseUnposable). Counted and not sent, every later answer was
+        // compared with the query before it: false failures of these invariants (commit 1966bb0).
+        var run = Acphys.Run(["verify", "--impl-cmd", Acphys.ServeCommand + " --world-frame", "--base-seed", "7700123001", "--only", "ADJUST-GEOMETRY,ADJUST-IDEMPOTENT,ADJUST-PRESERVES-POSITION,ADJUST-RANGE,LANDDEFS-CONFORMANCE", "--cases", "2000", "--timeout", "60"]);
+        Assert.True(run.Exit == 0, run.ToString());
+        Assert.Contains("verify: pipeline: 5 invariant runs streamed", run.Err, StringComparison.Ordinal);
+    }
+
     [Fact]
     public void EveryCentreSentInTheWorldFrameComesBackBitForBitOrIsNotSent()
     {

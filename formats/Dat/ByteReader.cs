@@ -1,5 +1,6 @@
 using System.Buffers.Binary;
 using System.Numerics;
+using System.Runtime.CompilerServices;
 using AcPhys.Core;
 
 namespace AcPhys.Spec.Dat;
@@ -39,6 +40,19 @@ public sealed class ByteReader(byte[] data, string record)
         if (!ok)
         {
             throw Error(field, offset, message);
+        }
+    }
+
+    /// <summary>Refuses the record unless a condition holds; the message is formatted only when it does not (<see cref="FailureText"/>).</summary>
+    /// <param name="ok">The condition.</param>
+    /// <param name="field">The field.</param>
+    /// <param name="offset">Its byte offset.</param>
+    /// <param name="message">The problem.</param>
+    public void Require(bool ok, string field, int offset, [InterpolatedStringHandlerArgument("ok")] ref FailureText message)
+    {
+        if (!ok)
+        {
+            throw Error(field, offset, message.Text());
         }
     }
 

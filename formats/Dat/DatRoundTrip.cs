@@ -18,15 +18,15 @@ public static class DatRoundTrip
     /// <param name="scene">A valid scene.</param>
     /// <returns>The export (manifest title "wire", source "load_scene").</returns>
     /// <exception cref="DatFormatException">The scene exceeds what the records hold.</exception>
-    public static DatExport Records(Scene scene) => Exports.GetValue(scene, s => DatSceneWriter.Write(s, "wire", "load_scene"));
+    public static DatExport Records(Scene scene) => Exports.GetValue(scene, s => Protocol.WireProfile.Time("tool: DatSceneWriter.Write", () => DatSceneWriter.Write(s, "wire", "load_scene")));
 
     /// <summary>Returns the scene as the records give it back.</summary>
     /// <param name="scene">A valid scene.</param>
     /// <returns>read(write(scene)), read from the very records <see cref="Records"/> sends.</returns>
-    public static Scene Of(Scene scene) => Cache.GetValue(scene, s =>
+    public static Scene Of(Scene scene) => Cache.GetValue(scene, s => Protocol.WireProfile.Time("tool: records read back (guess's scene)", () =>
     {
         var export = Records(s);
         var bytes = export.Records.ToDictionary(r => r.Record, r => r.Bytes);
         return DatSceneReader.Read(export.Manifest, r => bytes[r]);
-    });
+    }));
 }

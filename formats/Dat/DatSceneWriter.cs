@@ -62,13 +62,13 @@ public static class DatSceneWriter
         foreach (var cell in scene.Cells)
         {
             Require(cell.Portals.Count <= byte.MaxValue, $"cell {cell.Id} has {cell.Portals.Count} portals; an EnvCell holds at most 255");
-            string key = CellStructBuilder.GeometryKey(cell);
+            string key = Protocol.WireProfile.Time("dat write: GeometryKey", () => CellStructBuilder.GeometryKey(cell));
             if (!keys.TryGetValue(key, out ushort index))
             {
                 Require(structs.Count <= ushort.MaxValue, "more than 65536 distinct cell geometries");
                 index = (ushort)structs.Count;
                 keys.Add(key, index);
-                structs.Add(CellStructBuilder.Build(index, cell));
+                structs.Add(Protocol.WireProfile.Time("dat write: CellStructBuilder.Build", () => CellStructBuilder.Build(index, cell)));
             }
 
             var cs = structs[index];
@@ -85,7 +85,7 @@ public static class DatSceneWriter
         }
 
         records.AddRange(cellRecords);
-        records.Insert(0, (new ManifestRecord(RecordIds.EnvironmentId, true, RecordType.Environment), EnvironmentCodec.Write(RecordIds.EnvironmentId, structs)));
+        records.Insert(0, (new ManifestRecord(RecordIds.EnvironmentId, true, RecordType.Environment), Protocol.WireProfile.Time("dat write: Environment", () => EnvironmentCodec.Write(RecordIds.EnvironmentId, structs))));
         var manifest = new DatManifest(title, source, [.. records.Select(r => r.Item1)], scene.Blocks, scene.UnloadedBlocks, scene.UnloadedCells, elsewhere);
         return new DatExport(records, manifest);
     }

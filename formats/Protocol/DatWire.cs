@@ -17,6 +17,7 @@ public static class DatWire
     /// <param name="scene">The scene.</param>
     public static void WriteScene(Utf8JsonWriter w, string name, Scene scene)
     {
+        long t = WireProfile.Start();
         var export = DatRoundTrip.Records(scene); // written once per scene: the conformance check reads the same records back
         w.WriteStartObject(name);
         w.WritePropertyName("manifest");
@@ -29,13 +30,16 @@ public static class DatWire
 
         w.WriteEndObject();
         w.WriteEndObject();
+        WireProfile.Stop("tool: load_scene dat field (incl. Write)", t);
     }
 
     /// <summary>Reads a scene from its records.</summary>
     /// <param name="field">The object <see cref="WriteScene"/> writes.</param>
     /// <returns>The scene.</returns>
     /// <exception cref="WireException">Not such an object, or any defect of the manifest or a record (the reader's message, naming the record and byte offset).</exception>
-    public static Scene ReadScene(JsonElement field)
+    public static Scene ReadScene(JsonElement field) => WireProfile.Time("child: DatWire.ReadScene", () => ReadSceneTimed(field));
+
+    private static Scene ReadSceneTimed(JsonElement field)
     {
         if (field.ValueKind != JsonValueKind.Object)
         {
@@ -64,7 +68,7 @@ public static class DatWire
 
         try
         {
-            var manifest = DatManifestJson.Read(Wire.Field(field, "manifest").GetRawText(), "dat.manifest");
+            var manifest = WireProfile.Time("dat read: manifest JSON", () => DatManifestJson.Read(Wire.Field(field, "manifest").GetRawText(), "dat.manifest"));
             var listed = manifest.Records.Select(r => r.File).ToHashSet(StringComparer.Ordinal);
             if (bytes.Keys.FirstOrDefault(k => !listed.Contains(k)) is { } extra)
             {

@@ -36,6 +36,7 @@ internal sealed class LineProcess : IDisposable
     private BoundedLineReader? answers;
     private Task<string?>? pending;
     private bool dead;
+    private int receiving;
     private int group;
     private string tag = string.Empty;
     private string? stdoutPipe;
@@ -151,6 +152,25 @@ internal sealed class LineProcess : IDisposable
     /// <returns>The answer line.</returns>
     /// <exception cref="AdapterFailureException">The child exited, closed its stdout or did not answer in time.</exception>
     public string Receive(string what, string request, TimeSpan timeout, TimeSpan? wait = null)
+    {
+        // Two readers at once would take each other's answers (and one found `pending` cleared by the other: a
+        // NullReferenceException on the pipeline's reader thread). PipelineSession drains its reader before any live call.
+        if (Interlocked.Exchange(ref receiving, 1) != 0)
+        {
+            throw new InvalidOperationException($"two threads read the answers of '{commandLine}' at once");
+        }
+
+        try
+        {
+            return ReceiveOne(what, request, timeout, wait);
+        }
+        finally
+        {
+            Volatile.Write(ref receiving, 0);
+        }
+    }
+
+    private string ReceiveOne(string what, string request, TimeSpan timeout, TimeSpan? wait)
     {
         if (dead)
         {

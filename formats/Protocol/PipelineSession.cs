@@ -78,13 +78,20 @@ internal sealed class PipelineSession : IDisposable
     /// <param name="guess">The speculated answer, or null when none can be made.</param>
     /// <param name="live">The live call, for the replay pass after the first difference.</param>
     /// <returns>The answer.</returns>
+    /// <remarks>A query that throws while its request is built takes no slot: the next query gets the slot it would have
+    /// had, so every later answer stays paired with its own query in every pass.</remarks>
     public T Query<T>(string name, Func<string> request, Func<string, string, T> interpret, Func<T>? guess, Func<T> live)
     {
-        int at = next++;
-        return at < frontier ? Known(at, name, interpret, guess)
-            : at == divergedAt ? Differed(interpret, live)
-            : at >= liveFrom ? Live(live)
-            : Speculate(at, name, request, interpret, guess);
+        int at = next;
+        if (at < frontier || at == divergedAt || at >= liveFrom)
+        {
+            next++;
+            return at < frontier ? Known(at, name, interpret, guess)
+                : at == divergedAt ? Differed(interpret, live)
+                : Live(live);
+        }
+
+        return Speculate(at, name, request, interpret, guess);
     }
 
     /// <summary>Sends a scene load or unload within the speculative pass, answered at once with its guess.</summary>
@@ -127,8 +134,7 @@ internal sealed class PipelineSession : IDisposable
     /// <returns>True when every answer equalled its guess (the pass stands as the live run's).</returns>
     public bool Finish()
     {
-        inFlight.CompleteAdding();
-        reader.Join();
+        Drain();
         return !(Diverged && divergedPass == passes); // a failure found in an earlier pass is final: this pass reported it
     }
 
@@ -194,9 +200,9 @@ internal sealed class PipelineSession : IDisposable
         inFlight.Dispose();
     }
 
+    // The request is built (its scene loads streamed, owned by the slot to come) before the slot is taken.
     private T Speculate<T>(int at, string name, Func<string> request, Func<string, string, T> interpret, Func<T>? guess)
     {
-        names.Add(name);
         int outer = building;
         building = at;
         Streaming = true;
@@ -210,6 +216,9 @@ internal sealed class PipelineSession : IDisposable
             building = outer;
             Streaming = false;
         }
+
+        next++;
+        names.Add(name);
 
         T value = default!;
         bool guessed = false;
@@ -275,7 +284,27 @@ internal sealed class PipelineSession : IDisposable
         : Live(live);
 
     // A child that failed in an earlier pass (hung, exited) is reported as it failed, not as "no longer running".
-    private T Live<T>(Func<T> live) => child.Dead && (childFailure ?? sendFailure) is { } failed ? throw failed : live();
+    private T Live<T>(Func<T> live)
+    {
+        if (child.Dead && (childFailure ?? sendFailure) is { } failed)
+        {
+            throw failed;
+        }
+
+        Drain();
+        return live();
+    }
+
+    // A live call reads its answer on this thread, so the reader must have taken every streamed answer first: two
+    // threads must never read the child's stdout at once (LineProcess.Receive has one reader).
+    private void Drain()
+    {
+        if (!inFlight.IsAddingCompleted)
+        {
+            inFlight.CompleteAdding();
+            reader.Join();
+        }
+    }
 
     private void Send(Sent sent)
     {
@@ -285,11 +314,18 @@ internal sealed class PipelineSession : IDisposable
             return; // nothing more is sent after a difference: the pass is discarded
         }
 
+        if (inFlight.IsAddingCompleted)
+        {
+            throw new InvalidOperationException("a query was streamed after the pass went live"); // Live drained the stream
+        }
+
         sent.At = Stopwatch.GetTimestamp();
         inFlight.Add(sent);
         try
         {
+            long t = WireProfile.Start();
             child.Send(sent.Request, sent.Name);
+            WireProfile.Stop("tool: send (pipe write)", t);
         }
         catch (AdapterFailureException e)
         {
@@ -357,7 +393,9 @@ internal sealed class PipelineSession : IDisposable
                 bool same;
                 try
                 {
+                    long m = WireProfile.Start();
                     same = sent.Matches(line);
+                    WireProfile.Stop("tool: compare (reader thread)", m);
                 }
                 catch (Exception e) when (e is not OutOfMemoryException)
                 {

@@ -24,6 +24,7 @@ public sealed class ProcessAdapter : ICellPhysics, IDisposable
     private readonly Reported[] reported = [new(), new()]; // [0] open land, [1] scenes
     private PipelineSession? session;
     private int chosenIds;
+    private bool probing;
     private readonly List<string> differences = [];
 
     // Scenes are immutable records: serialise each once, however many steps of a walk query it.
@@ -62,10 +63,9 @@ public sealed class ProcessAdapter : ICellPhysics, IDisposable
     public IReadOnlyList<string> UnknownOps { get; }
 
     /// <summary>Gets a value indicating whether the implementation announced <c>pipeline</c>: <see cref="Pipelined{T}"/> then speculates and streams.</summary>
-    /// <remarks>Not for a world-frame child: its unposable points (UnposableQueryException) are thrown after the pipeline
-    /// has counted the query, which pairs later answers with the wrong queries (false failures, seen at base seed
-    /// 7700123001); until the pipeline skips such a query, a world-frame child is asked query by query, as its walks are.</remarks>
-    public bool Pipelines => (Ops & Op.Pipeline) != 0 && !InWorldFrame;
+    /// <remarks>A world-frame child too: a point it cannot be sent (UnposableQueryException) is refused before the
+    /// pipeline counts the query (<see cref="RefuseUnposable"/>), in every pass alike.</remarks>
+    public bool Pipelines => (Ops & Op.Pipeline) != 0;
 
     /// <summary>Gets how many runs went through <see cref="Pipelined{T}"/> with the pipeline, and how many of them had to be replayed (an answer differed from its guess).</summary>
     public (int Runs, int Replays) PipelineCounts { get; private set; }
@@ -193,14 +193,19 @@ public sealed class ProcessAdapter : ICellPhysics, IDisposable
                 ExceptionDispatchInfo? thrown = null;
                 try
                 {
+                    long r = WireProfile.Start();
                     result = run();
+                    WireProfile.Stop("tool: pipelined runs (all)", r);
                 }
                 catch (Exception e) when (e is not OutOfMemoryException)
                 {
                     thrown = ExceptionDispatchInfo.Capture(e);
                 }
 
-                if (s.Finish())
+                long f = WireProfile.Start();
+                bool stands = s.Finish();
+                WireProfile.Stop("tool: pass end, waiting for the child", f);
+                if (stands)
                 {
                     PipelineCounts = (PipelineCounts.Runs + 1, PipelineCounts.Replays + (pass > 1 ? 1 : 0));
                     thrown?.Throw();
@@ -383,9 +388,9 @@ public sealed class ProcessAdapter : ICellPhysics, IDisposable
 
     private void SceneField(Utf8JsonWriter w, Scene? scene)
     {
-        if (scene is null)
+        if (scene is null || probing)
         {
-            w.WriteNull("scene");
+            w.WriteNull("scene"); // probing: no scene is loaded for a request that is only converted (RefuseUnposable)
         }
         else if ((Ops & Op.LoadScene) != 0)
         {
@@ -500,9 +505,35 @@ public sealed class ProcessAdapter : ICellPhysics, IDisposable
             throw new NotSupportedException($"{Name} does not offer {OpNames.Names(op)[0]}");
         }
 
+        if (InWorldFrame)
+        {
+            RefuseUnposable(name, fields);
+        }
+
         return session is { } s
-            ? s.Query(name, () => Request(name, fields), (request, answer) => Interpret(name, request, answer, read), () => guess(guesser.Value), () => Live(name, Request(name, fields), read))
+            ? s.Query(name, () => Request(name, fields), (request, answer) => Interpret(name, request, answer, read), () => WireProfile.Time("tool: guess (reference, incl. its scene build)", () => guess(guesser.Value)), () => Live(name, Request(name, fields), read))
             : Live(name, Request(name, fields), read);
+    }
+
+    // A world-frame point a double cannot carry exactly (WorldFrame) is refused before the query is asked or counted:
+    // a pipelined pass that counted it would pair every later answer with the wrong query (false failures at base seed
+    // 7700123001), and one that skipped it in the first pass only would replay another run. The request is written
+    // without its scene (nothing is loaded) and converted; its points are all the conversion reads.
+    private void RefuseUnposable(string name, Action<Utf8JsonWriter> fields)
+    {
+        probing = true;
+        try
+        {
+            _ = WorldFrame.ToWorld(Wire.Line(w =>
+            {
+                w.WriteString("op", name);
+                fields(w);
+            }));
+        }
+        finally
+        {
+            probing = false;
+        }
     }
 
     // A scene load or unload: transport, streamed within a pipelined run's first pass, live otherwise.
@@ -522,11 +553,17 @@ public sealed class ProcessAdapter : ICellPhysics, IDisposable
     // Every request line, streamed or awaited; a world-frame child gets its points in world coordinates (WorldFrame).
     private string Request(string name, Action<Utf8JsonWriter> fields)
     {
+        long t = WireProfile.Start();
         string request = Wire.Line(w =>
         {
             w.WriteString("op", name);
             fields(w);
         });
+        if (WireProfile.On)
+        {
+            WireProfile.Stop("tool: request line (" + name + ", nested)", t);
+        }
+
         return InWorldFrame ? WorldFrame.ToWorld(request) : request;
     }
 

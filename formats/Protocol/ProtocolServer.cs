@@ -55,7 +55,9 @@ public sealed class ProtocolServer(ICellPhysics impl)
         {
             if (!reader.HasBufferedLine)
             {
+                long f = WireProfile.Start();
                 output.Flush(); // before any wait for input; a pipelining client's requests already here are answered first, together
+                WireProfile.Stop("child: flush", f);
             }
 
             string answer;
@@ -72,7 +74,9 @@ public sealed class ProtocolServer(ICellPhysics impl)
                     continue;
                 }
 
+                long t = WireProfile.Start();
                 answer = Answer(line);
+                WireProfile.Stop("child: answer (all ops)", t);
             }
             catch (LineTooLongException e)
             {
@@ -140,7 +144,7 @@ public sealed class ProtocolServer(ICellPhysics impl)
         switch (op)
         {
             case "load_scene":
-                return LoadScene(request);
+                return WireProfile.Time("child: load_scene", () => LoadScene(request));
             case "unload_scene":
                 {
                     string id = Wire.ReadString(request, "scene_id");
@@ -158,7 +162,7 @@ public sealed class ProtocolServer(ICellPhysics impl)
 
         if (op == "find_cell_walk")
         {
-            return FindCellWalk(request);
+            return WireProfile.Time("child: find_cell_walk", () => FindCellWalk(request));
         }
 
         var known = OpNames.Parse([op], out _);
@@ -350,6 +354,11 @@ public sealed class ProtocolServer(ICellPhysics impl)
             }
 
             loadedScenes[id] = scene;
+            if (WireProfile.On)
+            {
+                WireProfile.Time("child: SceneBuild.Build (eager when profiled)", () => SceneBuild.Build(scene));
+            }
+
             return Wire.Line(w => w.WriteString("scene_id", id));
         }
     }
