@@ -17,6 +17,7 @@ public sealed class UndeclaredDeviationTests
     [InlineData("--fidelity ace-early-return")]
     [InlineData("--fidelity ace-load-hint-low-key")]
     [InlineData("--fidelity ace-no-portal-guard")]
+    [InlineData("--fidelity ace-neighbour-via-visible-cells")] // hub walks whose Q0 does not see a portal neighbour (facts §7 #10)
     [InlineData("--fidelity reframe-transit")]
     [InlineData("--fidelity ace-transition-filter")]
     [InlineData("--pick current-first")]

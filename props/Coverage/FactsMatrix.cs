@@ -44,7 +44,7 @@ internal static class FactsMatrix
         new("§4 step 4b", "retail pick: no hysteresis", "centre:on-cell-line", "deviation:current-first", Query),
         new("§4 step 4b", "an env hit wins over land", "route:Enter", "fault:outdoor-wins", Walks),
         new("§4 step 4b, pitfall 6", "first env hit wins", "cell:overlap-stairwell", "fault:pick-last-env", Walks),
-        new("§4 step 4b, pitfall 8", "only sphere 0 decides the pick", "body:3-spheres", "fault:pick-last-sphere", "PORTAL-TRANSIT"),
+        new("§4 step 4b, pitfall 8", "only sphere 0 decides the pick", "body:mixed-radii", "fault:pick-last-sphere", "PORTAL-TRANSIT"),
         new("§4 step 4b, pitfall 11", "the pick subtracts GetBlockOffset", "place:across-block-line", "fault:no-reframe", Walks),
         new("§4 step 4b", "no containing cell: currCell null", "route:DungeonRun", "fault:keep-current-on-miss", Walks),
         new("§4 step 5", "static queries filter by VisibleCells", "route:Enter", "fault:no-visibility-filter", Walks),
