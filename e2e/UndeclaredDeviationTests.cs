@@ -17,7 +17,6 @@ public sealed class UndeclaredDeviationTests
     [InlineData("--fidelity ace-early-return")]
     [InlineData("--fidelity ace-load-hint-low-key")]
     [InlineData("--fidelity ace-no-portal-guard")]
-    [InlineData("--fidelity ace-neighbour-via-visible-cells")] // hub walks whose Q0 does not see a portal neighbour (facts §7 #10)
     [InlineData("--fidelity reframe-transit")]
     [InlineData("--fidelity ace-transition-filter")]
     [InlineData("--pick current-first")]
@@ -25,6 +24,16 @@ public sealed class UndeclaredDeviationTests
     {
         var run = Acphys.Run(["verify", "--impl-cmd", $"{Acphys.ServeCommand} {mode} --announce-retail", "--only", "FIND-CELL-CONFORMANCE", "--timeout", "60", "--max-classes", "1"]);
         Assert.True(run.Exit == 1, $"serve {mode} announcing retail: expected FIND-CELL-CONFORMANCE to fail (exit 1): {run}");
+        Assert.Contains("FAIL FIND-CELL-CONFORMANCE", run.Out, StringComparison.Ordinal);
+    }
+
+    [Fact(DisplayName = "FIND-CELL-CONFORMANCE: ace-neighbour-via-visible-cells served while announcing retail fails within 300 cases over protocol v1 (hub walks)")]
+    public void UndeclaredNeighbourViaVisibleCellsFails()
+    {
+        // Facts §7 #10: only a hub whose Q0 does not list a portal neighbour in its VisibleCells shows it (see:blind-neighbour);
+        // the first one comes early in the pr stream, so a 300-case budget keeps this case short.
+        var run = Acphys.Run(["verify", "--impl-cmd", $"{Acphys.ServeCommand} --fidelity ace-neighbour-via-visible-cells --announce-retail", "--only", "FIND-CELL-CONFORMANCE", "--cases", "300", "--timeout", "60", "--max-classes", "1"]);
+        Assert.True(run.Exit == 1, $"serve --fidelity ace-neighbour-via-visible-cells announcing retail: expected FIND-CELL-CONFORMANCE to fail (exit 1): {run}");
         Assert.Contains("FAIL FIND-CELL-CONFORMANCE", run.Out, StringComparison.Ordinal);
     }
 
