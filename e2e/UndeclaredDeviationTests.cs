@@ -27,6 +27,16 @@ public sealed class UndeclaredDeviationTests
         Assert.Contains("FAIL FIND-CELL-CONFORMANCE", run.Out, StringComparison.Ordinal);
     }
 
+    [Fact(DisplayName = "FIND-CELL-CONFORMANCE: ace-neighbour-via-visible-cells served while announcing retail fails within 300 cases over protocol v1 (hub walks)")]
+    public void UndeclaredNeighbourViaVisibleCellsFails()
+    {
+        // Facts §7 #10: only a hub whose Q0 does not list a portal neighbour in its VisibleCells shows it (see:blind-neighbour);
+        // the first one comes early in the pr stream, so a 300-case budget keeps this case short.
+        var run = Acphys.Run(["verify", "--impl-cmd", $"{Acphys.ServeCommand} --fidelity ace-neighbour-via-visible-cells --announce-retail", "--only", "FIND-CELL-CONFORMANCE", "--cases", "300", "--timeout", "60", "--max-classes", "1"]);
+        Assert.True(run.Exit == 1, $"serve --fidelity ace-neighbour-via-visible-cells announcing retail: expected FIND-CELL-CONFORMANCE to fail (exit 1): {run}");
+        Assert.Contains("FAIL FIND-CELL-CONFORMANCE", run.Out, StringComparison.Ordinal);
+    }
+
     [Fact(DisplayName = "FIND-CELL-CONFORMANCE: the same deviation declared in hello is no finding (the sealed closet picked under ACE's point_in_cell)")]
     public void DeclaredDeviationPasses()
     {

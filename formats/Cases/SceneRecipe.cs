@@ -46,6 +46,9 @@ public enum SceneRoute
 
     /// <summary>A cottage with a sealed closet: from outside straight into the closet's middle and back out (facts §5.5).</summary>
     Closet,
+
+    /// <summary>A hub (<see cref="HubPlan"/>): from Q0's middle to near the corner where the four quadrants meet, and back.</summary>
+    Hub,
 }
 
 /// <summary>
@@ -66,6 +69,9 @@ public sealed record SceneRecipe(CottagePlan? Cottage, DungeonPlan? Dungeon, Sce
     /// <summary>Gets the estate, or null (when set, it takes the place of the cottage and the dungeon).</summary>
     public EstatePlan? Estate { get; init; }
 
+    /// <summary>Gets the hub, or null (when set, it takes the place of the cottage and the dungeon).</summary>
+    public HubPlan? Hub { get; init; }
+
     /// <summary>Gets the number of spheres (1 to 3, at heights 0.6, 1.3, 1.9 m) with their own radii; 0 = <see cref="TwoSpheres"/> decides.</summary>
     public int Spheres { get; init; }
 
@@ -76,15 +82,15 @@ public sealed record SceneRecipe(CottagePlan? Cottage, DungeonPlan? Dungeon, Sce
     public float Radius2 { get; init; }
 
     /// <summary>Gets the shape class of the scene, for distributions.</summary>
-    public string Shape => Estate is { } e ? $"estate-{e.Layout.ToString().ToLowerInvariant()}-{e.Rooms}" : Cottage is { } c ? $"cottage-{c.Rooms}{(c.Storey ? "+storey" : string.Empty)}" : $"dungeon-{Dungeon!.Cells}";
+    public string Shape => Hub is not null ? "hub" : Estate is { } e ? $"estate-{e.Layout.ToString().ToLowerInvariant()}-{e.Rooms}" : Cottage is { } c ? $"cottage-{c.Rooms}{(c.Storey ? "+storey" : string.Empty)}" : $"dungeon-{Dungeon!.Cells}";
 
     /// <summary>Builds the case.</summary>
     /// <returns>The scene walk.</returns>
     public SceneWalk Build()
     {
         var model = Estate is { } e ? EstateKit.Build(e) : null;
-        var scene = model?.Scene ?? (Cottage is { } c ? SceneKit.Cottage(c) : SceneKit.Dungeon(Dungeon!));
-        var (startCell, points) = model is not null ? EstateRoute.Points(this, model) : Cottage is { } plan ? CottageRoute(plan) : DungeonRoute(Dungeon!);
+        var scene = model?.Scene ?? (Hub is { } h ? HubKit.Build(h) : Cottage is { } c ? SceneKit.Cottage(c) : SceneKit.Dungeon(Dungeon!));
+        var (startCell, points) = model is not null ? EstateRoute.Points(this, model) : Hub is { } hub ? (hub.QuadrantId(0), HubKit.Route(hub)) : Cottage is { } plan ? CottageRoute(plan) : DungeonRoute(Dungeon!);
         var steps = new List<Vector2>();
         float total = 0;
         for (int i = 1; i < points.Count; i++)
@@ -116,7 +122,7 @@ public sealed record SceneRecipe(CottagePlan? Cottage, DungeonPlan? Dungeon, Sce
         // Likewise a walk has no business off the map: a cottage at the west edge, yawed so that its rooms overhang the
         // edge, walked through and out of its back door onto no land is lost for good. The walk stops before its centre
         // would leave the map (found by the scene fuzz target).
-        var home = model is not null ? startCell.Landblock : Cottage?.Block ?? Dungeon!.Block;
+        var home = model is not null || Hub is not null ? startCell.Landblock : Cottage?.Block ?? Dungeon!.Block;
         int take = Math.Min(Take, OnMapSteps(new Vector2(192f * home.X, 192f * home.Y), points[0], steps));
 
         BodySphere[] body = Spheres > 0
@@ -136,7 +142,7 @@ public sealed record SceneRecipe(CottagePlan? Cottage, DungeonPlan? Dungeon, Sce
     /// <inheritdoc/>
     public override string ToString() =>
         string.Create(CultureInfo.InvariantCulture, $"{Shape} {Route} target {Target} r={Radius}{(Spheres > 0 ? $" spheres {Spheres} r1={Radius1} r2={Radius2}" : TwoSpheres ? " x2" : string.Empty)} step≤{StepMax} jitter {Jitter} take {Take}") +
-        (Estate is { } e ? " " + e
+        (Hub is { } hb ? " " + hb : Estate is { } e ? " " + e
         : Cottage is { } c
             ? string.Create(CultureInfo.InvariantCulture, $" at ({c.WorldX:R}, {c.WorldY:R}) yaw {c.Yaw} {c.Width}x{c.Depth} flips {c.Flips}{(c.BackDoor ? " back-door" : string.Empty)}{(c.LoadNeighbours ? string.Empty : " neighbours-unloaded")}{(c.Closet ? " closet" : string.Empty)}")
             : string.Create(CultureInfo.InvariantCulture, $" at ({Dungeon!.WorldX:R}, {Dungeon.WorldY:R}) length {Dungeon.Length} unloaded {Dungeon.Unloaded} flips {Dungeon.Flips}"));

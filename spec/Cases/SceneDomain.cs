@@ -23,6 +23,16 @@ public sealed class SceneDomain : ICaseDomain<SceneWalk>
 
         yield return "scene:" + r.Shape;
         yield return "route:" + r.Route;
+        if (r.Hub is { } hub)
+        {
+            foreach (var tag in HubClasses.Of(hub, w))
+            {
+                yield return tag;
+            }
+
+            yield break;
+        }
+
         if (r.Estate is not null)
         {
             foreach (var tag in EstateClasses.Of(r, w))

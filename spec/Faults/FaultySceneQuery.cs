@@ -87,7 +87,7 @@ internal static class FaultySceneQuery
             }
             else
             {
-                SceneQuery.FilterVisible(array, scene, position);
+                FilterOrder.Filter(array, scene, position, FilterOrderFaults.WayOf(defect)); // retail unless a filter-order fault (facts §5.9)
             }
         }
 

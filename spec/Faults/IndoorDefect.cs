@@ -50,4 +50,16 @@ internal enum IndoorDefect
 
     /// <summary>A cell without portals is never added by building entry or a portal neighbour test (the point_in_cell guard moved into transit).</summary>
     PortalGuardInTransit,
+
+    /// <summary>The visibility filter keeps the survivors in insertion order (<see cref="FilterOrderFaults"/>).</summary>
+    FilterStableOrder,
+
+    /// <summary>The visibility filter never tests the entry it swapped into a hole.</summary>
+    FilterSkipsSwappedIn,
+
+    /// <summary>The visibility filter walks from the last entry to the first.</summary>
+    FilterFromEnd,
+
+    /// <summary>The visibility filter walks the live array and re-tests the swapped-in entry at once.</summary>
+    FilterLiveRecheck,
 }

@@ -145,6 +145,7 @@ public static class IndoorPortFaults
         NeighbourWrongFrame, BuildingFirstPortalOnly, BuildingStopFirstRoom, SnapshotClosure, ExitStraddleOneSided, InvalidBldPortalEntered,
         NeighbourByPlane, WalksNegativeChildren, PickLastEnv, PickLastSphere, FilterDropsHints, HitsInteriorUnset, CloseIsOutside,
         SphereTestUnpadded, TransitSphere0Only, PickBeforeTransit, HintStraddleOnly, EarlyReturnUndeclared, PortalGuardInTransit,
+        .. FilterOrderFaults.All,
     ];
 
     /// <summary>Returns the code defect a fault plants in <see cref="FaultySceneQuery"/> (none for a volume or data fault).</summary>
@@ -167,7 +168,7 @@ public static class IndoorPortFaults
         "hint-straddle-only" => IndoorDefect.HintStraddleOnly,
         "early-return-undeclared" => IndoorDefect.EarlyReturnUndeclared,
         "portal-guard-in-transit" => IndoorDefect.PortalGuardInTransit,
-        _ => IndoorDefect.None,
+        _ => FilterOrderFaults.DefectOf(fault),
     };
 
     /// <summary>Returns the volume decorator a fault plants, or null.</summary>
