@@ -46,6 +46,12 @@ public enum SceneRoute
 
     /// <summary>A cottage with a sealed closet: from outside straight into the closet's middle and back out (facts §5.5).</summary>
     Closet,
+
+    /// <summary>Issue 27: a sphere at near-touch gaps from a plane that decides a test (<see cref="SceneRecipe.NearTouch"/>).</summary>
+    NearTouch,
+
+    /// <summary>Issue 27: into a dungeon hub's corner where a load hint comes early in the closure (<see cref="SceneRecipe.Hub"/>).</summary>
+    HintAhead,
 }
 
 /// <summary>
@@ -75,13 +81,29 @@ public sealed record SceneRecipe(CottagePlan? Cottage, DungeonPlan? Dungeon, Sce
     /// <summary>Gets sphere 2's radius (with <see cref="Spheres"/> = 3).</summary>
     public float Radius2 { get; init; }
 
+    /// <summary>Gets the near-touch plan, or null (when set, it builds the whole case).</summary>
+    public NearTouchPlan? NearTouch { get; init; }
+
+    /// <summary>Gets the hint-ahead hub, or null (when set, it builds the whole case).</summary>
+    public HubPlan? Hub { get; init; }
+
     /// <summary>Gets the shape class of the scene, for distributions.</summary>
-    public string Shape => Estate is { } e ? $"estate-{e.Layout.ToString().ToLowerInvariant()}-{e.Rooms}" : Cottage is { } c ? $"cottage-{c.Rooms}{(c.Storey ? "+storey" : string.Empty)}" : $"dungeon-{Dungeon!.Cells}";
+    public string Shape => NearTouch is { } n ? (n.Target == NearTarget.Building ? $"cottage-{Math.Clamp(n.Cells, 1, 2)}" : $"dungeon-{Math.Max(2, n.Cells)}") : Hub is not null ? "dungeon-hub" : Estate is { } e ? $"estate-{e.Layout.ToString().ToLowerInvariant()}-{e.Rooms}" : Cottage is { } c ? $"cottage-{c.Rooms}{(c.Storey ? "+storey" : string.Empty)}" : $"dungeon-{Dungeon!.Cells}";
 
     /// <summary>Builds the case.</summary>
     /// <returns>The scene walk.</returns>
     public SceneWalk Build()
     {
+        if (NearTouch is { } near)
+        {
+            return near.Build(this);
+        }
+
+        if (Hub is { } hub)
+        {
+            return hub.Build(this);
+        }
+
         var model = Estate is { } e ? EstateKit.Build(e) : null;
         var scene = model?.Scene ?? (Cottage is { } c ? SceneKit.Cottage(c) : SceneKit.Dungeon(Dungeon!));
         var (startCell, points) = model is not null ? EstateRoute.Points(this, model) : Cottage is { } plan ? CottageRoute(plan) : DungeonRoute(Dungeon!);
@@ -136,7 +158,9 @@ public sealed record SceneRecipe(CottagePlan? Cottage, DungeonPlan? Dungeon, Sce
     /// <inheritdoc/>
     public override string ToString() =>
         string.Create(CultureInfo.InvariantCulture, $"{Shape} {Route} target {Target} r={Radius}{(Spheres > 0 ? $" spheres {Spheres} r1={Radius1} r2={Radius2}" : TwoSpheres ? " x2" : string.Empty)} step≤{StepMax} jitter {Jitter} take {Take}") +
-        (Estate is { } e ? " " + e
+        (NearTouch is { } n ? " " + n
+        : Hub is { } h ? " " + h
+        : Estate is { } e ? " " + e
         : Cottage is { } c
             ? string.Create(CultureInfo.InvariantCulture, $" at ({c.WorldX:R}, {c.WorldY:R}) yaw {c.Yaw} {c.Width}x{c.Depth} flips {c.Flips}{(c.BackDoor ? " back-door" : string.Empty)}{(c.LoadNeighbours ? string.Empty : " neighbours-unloaded")}{(c.Closet ? " closet" : string.Empty)}")
             : string.Create(CultureInfo.InvariantCulture, $" at ({Dungeon!.WorldX:R}, {Dungeon.WorldY:R}) length {Dungeon.Length} unloaded {Dungeon.Unloaded} flips {Dungeon.Flips}"));

@@ -23,6 +23,11 @@ public sealed class SceneDomain : ICaseDomain<SceneWalk>
 
         yield return "scene:" + r.Shape;
         yield return "route:" + r.Route;
+        foreach (var tag in CornerClasses.Of(r))
+        {
+            yield return tag;
+        }
+
         if (r.Estate is not null)
         {
             foreach (var tag in EstateClasses.Of(r, w))
