@@ -50,4 +50,31 @@ internal enum IndoorDefect
 
     /// <summary>A cell without portals is never added by building entry or a portal neighbour test (the point_in_cell guard moved into transit).</summary>
     PortalGuardInTransit,
+
+    /// <summary>Issue 27: the neighbour sphere test pads the radius by EPS (before the BSP's own 0.01).</summary>
+    NeighbourPaddedEps,
+
+    /// <summary>Issue 27: the neighbour sphere test pads the radius by 0.01 (the BSP's padding applied twice).</summary>
+    NeighbourPaddedBsp,
+
+    /// <summary>Issue 27: building entry pads the radius by EPS.</summary>
+    BuildingEntryPadded,
+
+    /// <summary>Issue 27: the exit and load-hint plane tests use R = r (no EPS).</summary>
+    PortalPlaneUnpadded,
+
+    /// <summary>Issue 27: the exit and load-hint plane tests use R = r − EPS (the padding's sign flipped).</summary>
+    PortalPlanePadNegated,
+
+    /// <summary>Issue 27: the exit and load-hint plane tests pad by the BSP's 0.01 instead of EPS.</summary>
+    PortalPlaneBspPad,
+
+    /// <summary>Issue 27: the transit closure stops at the first load hint.</summary>
+    ClosureBreaksAtHint,
+
+    /// <summary>Issue 27: the transit closure skips the entry after a load hint too.</summary>
+    ClosureSkipsAfterHint,
+
+    /// <summary>Issue 27: the transit closure's bound is the count minus the hints seen so far.</summary>
+    ClosureBoundMinusHints,
 }
