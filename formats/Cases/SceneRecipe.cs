@@ -49,6 +49,12 @@ public enum SceneRoute
 
     /// <summary>A hub (<see cref="HubPlan"/>): from Q0's middle to near the corner where the four quadrants meet, and back.</summary>
     Hub,
+
+    /// <summary>Issue 27: a sphere at near-touch gaps from a plane that decides a test (<see cref="SceneRecipe.NearTouch"/>).</summary>
+    NearTouch,
+
+    /// <summary>Issue 27: into a dungeon hub's corner where a load hint comes early in the closure (<see cref="SceneRecipe.HintHub"/>).</summary>
+    HintAhead,
 }
 
 /// <summary>
@@ -81,13 +87,29 @@ public sealed record SceneRecipe(CottagePlan? Cottage, DungeonPlan? Dungeon, Sce
     /// <summary>Gets sphere 2's radius (with <see cref="Spheres"/> = 3).</summary>
     public float Radius2 { get; init; }
 
+    /// <summary>Gets the near-touch plan, or null (when set, it builds the whole case).</summary>
+    public NearTouchPlan? NearTouch { get; init; }
+
+    /// <summary>Gets the hint-ahead hub, or null (when set, it builds the whole case).</summary>
+    public HintHubPlan? HintHub { get; init; }
+
     /// <summary>Gets the shape class of the scene, for distributions.</summary>
-    public string Shape => Hub is not null ? "hub" : Estate is { } e ? $"estate-{e.Layout.ToString().ToLowerInvariant()}-{e.Rooms}" : Cottage is { } c ? $"cottage-{c.Rooms}{(c.Storey ? "+storey" : string.Empty)}" : $"dungeon-{Dungeon!.Cells}";
+    public string Shape => NearTouch is { } n ? (n.Target == NearTarget.Building ? $"cottage-{Math.Clamp(n.Cells, 1, 2)}" : $"dungeon-{Math.Max(2, n.Cells)}") : HintHub is not null ? "dungeon-hub" : Hub is not null ? "hub" : Estate is { } e ? $"estate-{e.Layout.ToString().ToLowerInvariant()}-{e.Rooms}" : Cottage is { } c ? $"cottage-{c.Rooms}{(c.Storey ? "+storey" : string.Empty)}" : $"dungeon-{Dungeon!.Cells}";
 
     /// <summary>Builds the case.</summary>
     /// <returns>The scene walk.</returns>
     public SceneWalk Build()
     {
+        if (NearTouch is { } near)
+        {
+            return near.Build(this);
+        }
+
+        if (HintHub is { } hintHub)
+        {
+            return hintHub.Build(this);
+        }
+
         var model = Estate is { } e ? EstateKit.Build(e) : null;
         var scene = model?.Scene ?? (Hub is { } h ? HubKit.Build(h) : Cottage is { } c ? SceneKit.Cottage(c) : SceneKit.Dungeon(Dungeon!));
         var (startCell, points) = model is not null ? EstateRoute.Points(this, model) : Hub is { } hub ? (hub.QuadrantId(0), HubKit.Route(hub)) : Cottage is { } plan ? CottageRoute(plan) : DungeonRoute(Dungeon!);
@@ -142,7 +164,10 @@ public sealed record SceneRecipe(CottagePlan? Cottage, DungeonPlan? Dungeon, Sce
     /// <inheritdoc/>
     public override string ToString() =>
         string.Create(CultureInfo.InvariantCulture, $"{Shape} {Route} target {Target} r={Radius}{(Spheres > 0 ? $" spheres {Spheres} r1={Radius1} r2={Radius2}" : TwoSpheres ? " x2" : string.Empty)} step≤{StepMax} jitter {Jitter} take {Take}") +
-        (Hub is { } hb ? " " + hb : Estate is { } e ? " " + e
+        (NearTouch is { } n ? " " + n
+        : HintHub is { } hh ? " " + hh
+        : Hub is { } hb ? " " + hb
+        : Estate is { } e ? " " + e
         : Cottage is { } c
             ? string.Create(CultureInfo.InvariantCulture, $" at ({c.WorldX:R}, {c.WorldY:R}) yaw {c.Yaw} {c.Width}x{c.Depth} flips {c.Flips}{(c.BackDoor ? " back-door" : string.Empty)}{(c.LoadNeighbours ? string.Empty : " neighbours-unloaded")}{(c.Closet ? " closet" : string.Empty)}")
             : string.Create(CultureInfo.InvariantCulture, $" at ({Dungeon!.WorldX:R}, {Dungeon.WorldY:R}) length {Dungeon.Length} unloaded {Dungeon.Unloaded} flips {Dungeon.Flips}"));

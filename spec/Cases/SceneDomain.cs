@@ -23,6 +23,11 @@ public sealed class SceneDomain : ICaseDomain<SceneWalk>
 
         yield return "scene:" + r.Shape;
         yield return "route:" + r.Route;
+        foreach (var tag in CornerClasses.Of(r))
+        {
+            yield return tag;
+        }
+
         if (r.Hub is { } hub)
         {
             foreach (var tag in HubClasses.Of(hub, w))

@@ -47,12 +47,18 @@ internal static class FaultySceneQuery
 
             // Facts §4 step 4a: the count is re-read each time, so appended cells are walked too (the seed's
             // "snapshot" comment invites reading it once).
-            int snapshot = array.Count;
-            for (int i = 0; i < (defect == IndoorDefect.SnapshotClosure ? snapshot : array.Count); i++)
+            int snapshot = array.Count, hints = 0;
+            for (int i = 0; i < (defect == IndoorDefect.SnapshotClosure ? snapshot : HintClosure.Bound(array.Count, hints, defect)); i++)
             {
                 var entry = array[i];
                 if (!entry.Loaded)
                 {
+                    // Facts §4 step 4a: a load hint is skipped and the walk goes on (issue 27's faults stop or mis-step here).
+                    if (HintClosure.StopsAt(ref i, ref hints, defect))
+                    {
+                        break;
+                    }
+
                     continue;
                 }
 

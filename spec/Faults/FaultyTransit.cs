@@ -23,7 +23,7 @@ internal static class FaultyTransit
         {
             if (portal.LeadsOutside(default))
             {
-                checkOutside |= Straddles(cell, portal, tested, defect == IndoorDefect.ExitStraddleOneSided);
+                checkOutside |= Straddles(cell, portal, tested, defect == IndoorDefect.ExitStraddleOneSided, defect);
                 continue;
             }
 
@@ -32,7 +32,7 @@ internal static class FaultyTransit
             if (other is not null && defect == IndoorDefect.NeighbourByPlane)
             {
                 // The load-hint side test reused for a loaded neighbour: its volume is never asked (facts §5.1).
-                if (ReachesSide(cell, portal, tested))
+                if (ReachesSide(cell, portal, tested, defect))
                 {
                     array.Add(other.Id, true);
                 }
@@ -50,7 +50,7 @@ internal static class FaultyTransit
                 var frame = defect == IndoorDefect.NeighbourWrongFrame ? cell.Frame : other.Frame; // facts §5.1: the neighbour's own frame
                 foreach (var s in tested)
                 {
-                    if (other.Volume.SphereIntersects(new Sphere(frame.GlobalToLocal(s.Center), s.Radius)) != BoundingType.Outside)
+                    if (other.Volume.SphereIntersects(new Sphere(frame.GlobalToLocal(s.Center), CornerFaults.NeighbourRadius(s.Radius, defect))) != BoundingType.Outside)
                     {
                         array.Add(other.Id, true);
                         break;
@@ -60,7 +60,7 @@ internal static class FaultyTransit
                 continue;
             }
 
-            bool hint = defect == IndoorDefect.HintStraddleOnly ? Straddles(cell, portal, tested, false) : ReachesSide(cell, portal, tested);
+            bool hint = defect == IndoorDefect.HintStraddleOnly ? Straddles(cell, portal, tested, false, defect) : ReachesSide(cell, portal, tested, defect);
             if (hint)
             {
                 array.Add(otherId, false);
@@ -97,7 +97,7 @@ internal static class FaultyTransit
             bool entered = false;
             foreach (var s in tested)
             {
-                if (env.Volume.SphereIntersects(new Sphere(env.Frame.GlobalToLocal(s.Center), s.Radius)) != BoundingType.Outside)
+                if (env.Volume.SphereIntersects(new Sphere(env.Frame.GlobalToLocal(s.Center), CornerFaults.BuildingRadius(s.Radius, defect))) != BoundingType.Outside)
                 {
                     entered = true;
                     array.Add(env.Id, true);
@@ -116,12 +116,12 @@ internal static class FaultyTransit
     }
 
     // Exit portals: −R < d < R, both strict, R = r + EPS (facts §5.1, §6.9); the defect drops the lower bound.
-    private static bool Straddles(EnvCell cell, CellPortal portal, ReadOnlySpan<Sphere> spheres, bool oneSided)
+    private static bool Straddles(EnvCell cell, CellPortal portal, ReadOnlySpan<Sphere> spheres, bool oneSided, IndoorDefect defect)
     {
         foreach (var s in spheres)
         {
             float d = portal.Plane.Distance(cell.Frame.GlobalToLocal(s.Center));
-            float r = s.Radius + LandDefs.Epsilon;
+            float r = CornerFaults.PlaneRadius(s.Radius, defect);
             if ((oneSided || d > -r) && d < r)
             {
                 return true;
@@ -132,12 +132,12 @@ internal static class FaultyTransit
     }
 
     // Load hints: this cell's frame, R = r + EPS, PortalSide ⇒ the other cell is on the positive side (facts §5.4).
-    private static bool ReachesSide(EnvCell cell, CellPortal portal, ReadOnlySpan<Sphere> spheres)
+    private static bool ReachesSide(EnvCell cell, CellPortal portal, ReadOnlySpan<Sphere> spheres, IndoorDefect defect)
     {
         foreach (var s in spheres)
         {
             float d = portal.Plane.Distance(cell.Frame.GlobalToLocal(s.Center));
-            float r = s.Radius + LandDefs.Epsilon;
+            float r = CornerFaults.PlaneRadius(s.Radius, defect);
             if ((portal.PortalSide && d > -r) || (!portal.PortalSide && d < r))
             {
                 return true;

@@ -62,4 +62,31 @@ internal enum IndoorDefect
 
     /// <summary>The visibility filter walks the live array and re-tests the swapped-in entry at once.</summary>
     FilterLiveRecheck,
+
+    /// <summary>Issue 27: the neighbour sphere test pads the radius by EPS (before the BSP's own 0.01).</summary>
+    NeighbourPaddedEps,
+
+    /// <summary>Issue 27: the neighbour sphere test pads the radius by 0.01 (the BSP's padding applied twice).</summary>
+    NeighbourPaddedBsp,
+
+    /// <summary>Issue 27: building entry pads the radius by EPS.</summary>
+    BuildingEntryPadded,
+
+    /// <summary>Issue 27: the exit and load-hint plane tests use R = r (no EPS).</summary>
+    PortalPlaneUnpadded,
+
+    /// <summary>Issue 27: the exit and load-hint plane tests use R = r − EPS (the padding's sign flipped).</summary>
+    PortalPlanePadNegated,
+
+    /// <summary>Issue 27: the exit and load-hint plane tests pad by the BSP's 0.01 instead of EPS.</summary>
+    PortalPlaneBspPad,
+
+    /// <summary>Issue 27: the transit closure stops at the first load hint.</summary>
+    ClosureBreaksAtHint,
+
+    /// <summary>Issue 27: the transit closure skips the entry after a load hint too.</summary>
+    ClosureSkipsAfterHint,
+
+    /// <summary>Issue 27: the transit closure's bound is the count minus the hints seen so far.</summary>
+    ClosureBoundMinusHints,
 }

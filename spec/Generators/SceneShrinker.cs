@@ -39,6 +39,11 @@ public static class SceneShrinker
             yield return r with { Take = steps - 1 };
         }
 
+        foreach (var corner in CornerShrinker.Recipes(r))
+        {
+            yield return corner;
+        }
+
         if (r.Estate is not null)
         {
             foreach (var e in EstateShrinker.Recipes(r))
