@@ -52,12 +52,13 @@ public sealed class OutOfProcessTests
         Assert.Contains("--fault clamp-106", replay, StringComparison.Ordinal);
     }
 
+    // The Python example's outdoor half, announced alone (--ops): the indoor half is judged by PythonIndoorTests.
+    private const string PythonOutdoorOps = "blockid_to_lcoord,gid_to_lcoord,lcoord_to_gid,inbound_valid_cellid,get_outside_lcoord,adjust_to_outside,outside_cells,find_cell,find_cell_walk";
+
     [RequiresPythonFact]
     public void PythonExamplePassesWithNoFalseAlarm()
     {
-        // Its outdoor half, announced alone (--ops): the indoor half is judged by PythonIndoorTests.
-        const string Outdoor = "blockid_to_lcoord,gid_to_lcoord,lcoord_to_gid,inbound_valid_cellid,get_outside_lcoord,adjust_to_outside,outside_cells,find_cell,find_cell_walk";
-        var run = Acphys.Run(["verify", "--impl-cmd", Acphys.PythonExample + " --ops " + Outdoor, "--cases", "400", "--timeout", "60"]);
+        var run = Acphys.Run(["verify", "--impl-cmd", Acphys.PythonExample + " --ops " + PythonOutdoorOps, "--cases", "400", "--timeout", "60"]);
         Assert.True(run.Exit == 0, run.ToString());
         Assert.Contains("against python-example;", run.Out, StringComparison.Ordinal);
         Assert.Contains(Expected.CleanSummary(Op.OpenLand & ~Op.OutsideCellsParts), run.Out, StringComparison.Ordinal);
@@ -72,8 +73,7 @@ public sealed class OutOfProcessTests
         // Its land test rounds as retail's float32 point_in_poly2D (facts §5.5), so every streamed answer equals the
         // reference's guess and no run is repeated (with a plain closed-square test, 2 of 42 runs were repeated at
         // 400 cases: a centre 1e-7 m west of a cell edge, inside by float32 rounding).
-        const string Outdoor = "blockid_to_lcoord,gid_to_lcoord,lcoord_to_gid,inbound_valid_cellid,get_outside_lcoord,adjust_to_outside,outside_cells,find_cell,find_cell_walk,pipeline";
-        var run = Acphys.Run(["verify", "--impl-cmd", Acphys.PythonExample + " --ops " + Outdoor, "--cases", "400", "--timeout", "60"]);
+        var run = Acphys.Run(["verify", "--impl-cmd", Acphys.PythonExample + " --ops " + PythonOutdoorOps + ",pipeline", "--cases", "400", "--timeout", "60"]);
         Assert.True(run.Exit == 0, run.ToString());
         Assert.Contains("invariant runs streamed, 0 replayed from the first differing answer", run.Err, StringComparison.Ordinal);
     }
