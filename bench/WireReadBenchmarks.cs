@@ -18,6 +18,7 @@ public class WireReadBenchmarks
     private readonly string loadSceneJson = Line("load_scene_json");
     private readonly string findCellAnswer = Line("find_cell_answer");
     private readonly string findCellWalkAnswer = Line("find_cell_walk_answer");
+    private readonly Scene sceneForRecords = SceneOf(Line("load_scene_json"));
 
     [Benchmark(Description = "server: find_cell request (open land, 153 B)")]
     public int FindCellRequest()
@@ -48,6 +49,9 @@ public class WireReadBenchmarks
         return SceneJson.Read(doc.RootElement.GetProperty("scene"), "find_cell", "$.scene").Cells.Count;
     }
 
+    [Benchmark(Description = "client: the load_scene scene written as dat records")]
+    public int WriteSceneRecords() => AcPhys.Spec.Dat.DatSceneWriter.Write(sceneForRecords, "wire", "load_scene").Records.Count;
+
     [Benchmark(Description = "client: find_cell answer (147 B)")]
     public int FindCellAnswer()
     {
@@ -61,6 +65,12 @@ public class WireReadBenchmarks
         using var doc = Wire.Parse(findCellWalkAnswer);
         var root = doc.RootElement;
         return WalkWire.ReadAnswer(root, root.GetProperty("steps").GetArrayLength()).Count;
+    }
+
+    private static Scene SceneOf(string line)
+    {
+        using var doc = Wire.Parse(line);
+        return SceneJson.Read(doc.RootElement.GetProperty("scene"), "find_cell", "$.scene");
     }
 
     private static string Line(string name)

@@ -78,10 +78,10 @@ public static class BspCodec
     /// <param name="type">The tree type.</param>
     /// <param name="field">The field name for messages.</param>
     /// <returns>The root.</returns>
-    public static BspNode Read(ByteReader r, BspTreeType type, string field) => Node(r, type, field, 0);
+    public static BspNode Read(ByteReader r, BspTreeType type, string? field) => Node(r, type, field, 0);
 
 
-    private static BspNode Node(ByteReader r, BspTreeType type, string field, int depth)
+    private static BspNode Node(ByteReader r, BspTreeType type, string? field, int depth)
     {
         int at = r.Position;
         r.Require(depth < MaxDepth, field, at, $"tree deeper than {MaxDepth} nodes");
@@ -96,13 +96,13 @@ public static class BspCodec
             }
 
             int solid = r.I32(field + ".solid");
-            var sphere = r.Sphere(field + ".sphere");
-            return BspNode.NewLeaf(index) with { Offset = at, Solid = solid, Sphere = sphere, Polygons = Ids(r, field + ".polygons") };
+            var sphere = r.Sphere(r.Path($"{field}.sphere"));
+            return BspNode.NewLeaf(index) with { Offset = at, Solid = solid, Sphere = sphere, Polygons = Ids(r, r.Path($"{field}.polygons")) };
         }
 
-        var plane = r.Plane(field + ".plane");
-        var pos = children.Positive ? Node(r, type, field + ".pos", depth + 1) : null;
-        var neg = children.Negative ? Node(r, type, field + ".neg", depth + 1) : null;
+        var plane = r.Plane(r.Path($"{field}.plane"));
+        var pos = children.Positive ? Node(r, type, r.Path($"{field}.pos"), depth + 1) : null;
+        var neg = children.Negative ? Node(r, type, r.Path($"{field}.neg"), depth + 1) : null;
         var node = new BspNode(tag, plane, pos, neg) { Offset = at };
         if (tag == BspTags.Port)
         {
@@ -111,7 +111,7 @@ public static class BspCodec
                 return node;
             }
 
-            var sphere = r.Sphere(field + ".sphere");
+            var sphere = r.Sphere(r.Path($"{field}.sphere"));
             int cAt = r.Position;
             uint numPolys = r.U32(field + ".numPolys");
             uint numPortals = r.U32(field + ".numPortals");
@@ -137,8 +137,8 @@ public static class BspCodec
             return node;
         }
 
-        node = node with { Sphere = r.Sphere(field + ".sphere") };
-        return type == BspTreeType.Drawing ? node with { Polygons = Ids(r, field + ".polygons") } : node;
+        node = node with { Sphere = r.Sphere(r.Path($"{field}.sphere")) };
+        return type == BspTreeType.Drawing ? node with { Polygons = Ids(r, r.Path($"{field}.polygons")) } : node;
     }
 
     private static void Ids(ByteWriter w, IReadOnlyList<ushort> ids)
@@ -150,7 +150,7 @@ public static class BspCodec
         }
     }
 
-    private static ushort[] Ids(ByteReader r, string field)
+    private static ushort[] Ids(ByteReader r, string? field)
     {
         int at = r.Position;
         int n = r.Count(r.U32(field + ".count"), 2, field + ".count", at);

@@ -1,3 +1,4 @@
+using System.Buffers;
 using System.Buffers.Binary;
 using System.Numerics;
 using AcPhys.Core;
@@ -7,26 +8,29 @@ namespace AcPhys.Spec.Dat;
 /// <summary>Little-endian record writer; <see cref="Align"/> pads from the record's first byte (dat-records.md, ALIGN).</summary>
 public sealed class ByteWriter
 {
-    private readonly MemoryStream buffer = new();
-    private readonly byte[] scratch = new byte[8];
+    private readonly ArrayBufferWriter<byte> buffer = new(256);
 
     /// <summary>Gets the number of bytes written.</summary>
-    public int Position => (int)buffer.Length;
+    public int Position => buffer.WrittenCount;
 
     /// <summary>Returns the bytes.</summary>
     /// <returns>The record.</returns>
-    public byte[] ToArray() => buffer.ToArray();
+    public byte[] ToArray() => buffer.WrittenSpan.ToArray();
 
     /// <summary>Writes a byte.</summary>
     /// <param name="v">The value.</param>
-    public void U8(byte v) => buffer.WriteByte(v);
+    public void U8(byte v)
+    {
+        buffer.GetSpan(1)[0] = v;
+        buffer.Advance(1);
+    }
 
     /// <summary>Writes a u16.</summary>
     /// <param name="v">The value.</param>
     public void U16(ushort v)
     {
-        BinaryPrimitives.WriteUInt16LittleEndian(scratch, v);
-        buffer.Write(scratch, 0, 2);
+        BinaryPrimitives.WriteUInt16LittleEndian(buffer.GetSpan(2), v);
+        buffer.Advance(2);
     }
 
     /// <summary>Writes an i16.</summary>
@@ -37,8 +41,8 @@ public sealed class ByteWriter
     /// <param name="v">The value.</param>
     public void U32(uint v)
     {
-        BinaryPrimitives.WriteUInt32LittleEndian(scratch, v);
-        buffer.Write(scratch, 0, 4);
+        BinaryPrimitives.WriteUInt32LittleEndian(buffer.GetSpan(4), v);
+        buffer.Advance(4);
     }
 
     /// <summary>Writes an i32.</summary>

@@ -1,5 +1,4 @@
 using System.Numerics;
-using System.Text;
 using AcPhys.Core;
 using AcPhys.Spec.Scenes;
 
@@ -21,23 +20,32 @@ public static class CellStructBuilder
     /// <returns>The key.</returns>
     public static string GeometryKey(SceneCell cell)
     {
-        var text = new StringBuilder();
+        // Counts before their items, so no two geometries share a key; each 32-bit value as two chars, unformatted.
+        var words = new List<uint>(64) { (uint)cell.Pieces.Count };
         foreach (var piece in cell.Pieces)
         {
-            text.Append('P');
-            foreach (var p in piece.ToConvex().Planes)
+            var planes = piece.ToConvex().Planes;
+            words.Add((uint)planes.Count);
+            foreach (var p in planes)
             {
-                Bits(text, p);
+                Bits(words, p);
             }
         }
 
+        words.Add((uint)cell.Portals.Count);
         foreach (var portal in cell.Portals)
         {
-            text.Append('Q');
-            Bits(text, PolygonPlane.Unit(portal.Plane));
+            Bits(words, PolygonPlane.Unit(portal.Plane));
         }
 
-        return text.ToString();
+        return string.Create(words.Count * 2, words, static (chars, ws) =>
+        {
+            for (int i = 0; i < ws.Count; i++)
+            {
+                chars[2 * i] = (char)(ws[i] >> 16);
+                chars[(2 * i) + 1] = (char)(ws[i] & 0xFFFF);
+            }
+        });
     }
 
     /// <summary>Builds the CellStruct; portal i's polygon id is <c>PortalPolygonIds[i]</c>.</summary>
@@ -159,9 +167,11 @@ public static class CellStructBuilder
     private static DatPolygon Polygon(int id, short[] vertexIds) =>
         new(checked((ushort)id), 0, 1, Surface, Surface, vertexIds, new byte[vertexIds.Length], []);
 
-    private static void Bits(StringBuilder text, CellPlane p) =>
-        text.Append(BitConverter.SingleToUInt32Bits(p.Normal.X)).Append(',')
-            .Append(BitConverter.SingleToUInt32Bits(p.Normal.Y)).Append(',')
-            .Append(BitConverter.SingleToUInt32Bits(p.Normal.Z)).Append(',')
-            .Append(BitConverter.SingleToUInt32Bits(p.D)).Append(';');
+    private static void Bits(List<uint> words, CellPlane p)
+    {
+        words.Add(BitConverter.SingleToUInt32Bits(p.Normal.X));
+        words.Add(BitConverter.SingleToUInt32Bits(p.Normal.Y));
+        words.Add(BitConverter.SingleToUInt32Bits(p.Normal.Z));
+        words.Add(BitConverter.SingleToUInt32Bits(p.D));
+    }
 }

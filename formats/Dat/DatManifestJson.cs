@@ -87,11 +87,35 @@ public static class DatManifestJson
         w.WriteEndObject();
     }
 
-    /// <summary>Parses a manifest.</summary>
+    /// <summary>Parses a manifest held in a parsed document (a <c>load_scene</c> request's <c>dat.manifest</c>).</summary>
+    /// <param name="element">The manifest object.</param>
+    /// <param name="source">A name for messages.</param>
+    /// <returns>The manifest.</returns>
+    /// <exception cref="DatFormatException">Any defect, with its JSON path: the messages <see cref="Read(string, string)"/> gives for the same text.</exception>
+    public static DatManifest Read(JsonElement element, string source)
+    {
+        // Parse once (issue 26): a manifest inside an already parsed request is read in place. Only one nested beyond
+        // what Read(string) parses (MaxDepth 24; generous margin here) takes the text path, so its refusal reads as before.
+        if (Depth(element, 0) > 16)
+        {
+            return Read(element.GetRawText(), source);
+        }
+
+        try
+        {
+            return Parse(element, source);
+        }
+        catch (CorpusFormatException e)
+        {
+            throw new DatFormatException(e.Message, e);
+        }
+    }
+
+    /// <summary>Reads a manifest from its JSON text (manifest.json).</summary>
     /// <param name="json">The text.</param>
     /// <param name="source">A name for messages.</param>
     /// <returns>The manifest.</returns>
-    /// <exception cref="DatFormatException">Any defect, with its JSON path.</exception>
+    /// <exception cref="DatFormatException">Not JSON, or any defect.</exception>
     public static DatManifest Read(string json, string source)
     {
         JsonDocument doc;
@@ -116,6 +140,13 @@ public static class DatManifestJson
             }
         }
     }
+
+    private static int Depth(JsonElement e, int depth) => e.ValueKind switch
+    {
+        JsonValueKind.Object => e.EnumerateObject().Aggregate(depth + 1, (d, p) => Math.Max(d, Depth(p.Value, depth + 1))),
+        JsonValueKind.Array => e.EnumerateArray().Aggregate(depth + 1, (d, v) => Math.Max(d, Depth(v, depth + 1))),
+        _ => depth,
+    };
 
     private static DatManifest Parse(JsonElement root, string source)
     {

@@ -82,9 +82,11 @@ public sealed record EnvCellRecord(uint Id, uint Flags, IReadOnlyList<ushort> Su
     /// <param name="expectedId">The id the record must carry.</param>
     /// <returns>The record.</returns>
     /// <exception cref="DatFormatException">Any defect.</exception>
-    public static EnvCellRecord Read(byte[] data, uint expectedId)
+    public static EnvCellRecord Read(byte[] data, uint expectedId) => ByteReader.Strictly(named => Read(data, expectedId, named));
+
+    internal static EnvCellRecord Read(byte[] data, uint expectedId, bool named)
     {
-        var r = new ByteReader(data, "EnvCell " + RecordIds.Text(expectedId));
+        var r = new ByteReader(data, "EnvCell", expectedId, named);
         uint id = r.U32("id");
         r.Require(id == expectedId, "id", 0, $"record id {RecordIds.Text(id)} is not its name {RecordIds.Text(expectedId)}");
         uint flags = r.U32("flags");
@@ -98,7 +100,7 @@ public sealed record EnvCellRecord(uint Id, uint Flags, IReadOnlyList<ushort> Su
         var surfaces = new ushort[numSurfaces];
         for (int i = 0; i < numSurfaces; i++)
         {
-            surfaces[i] = r.U16($"surfaces[{i}]");
+            surfaces[i] = r.U16(r.Path($"surfaces[{i}]"));
         }
 
         ushort environment = r.U16("environmentId");
@@ -107,14 +109,14 @@ public sealed record EnvCellRecord(uint Id, uint Flags, IReadOnlyList<ushort> Su
         var portals = new DatCellPortal[numPortals];
         for (int i = 0; i < numPortals; i++)
         {
-            string f = $"portals[{i}]";
+            string? f = r.Path($"portals[{i}]");
             portals[i] = new DatCellPortal(r.U16(f + ".flags"), r.U16(f + ".polygonId"), r.U16(f + ".otherCellId"), r.U16(f + ".otherPortalId"));
         }
 
         var visible = new ushort[numStabs];
         for (int i = 0; i < numStabs; i++)
         {
-            visible[i] = r.U16($"visibleCells[{i}]");
+            visible[i] = r.U16(r.Path($"visibleCells[{i}]"));
         }
 
         var stabs = new List<(uint, Vector3, Quaternion)>();
@@ -124,8 +126,8 @@ public sealed record EnvCellRecord(uint Id, uint Flags, IReadOnlyList<ushort> Su
             int n = r.Count(r.U32("staticObjects.count"), 32, "staticObjects.count", at);
             for (int i = 0; i < n; i++)
             {
-                uint sid = r.U32($"staticObjects[{i}].id");
-                var (o, q) = r.Frame($"staticObjects[{i}].frame");
+                uint sid = r.U32(r.Path($"staticObjects[{i}].id"));
+                var (o, q) = r.Frame(r.Path($"staticObjects[{i}].frame"));
                 stabs.Add((sid, o, q));
             }
         }

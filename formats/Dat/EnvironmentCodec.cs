@@ -74,9 +74,11 @@ public static class EnvironmentCodec
     /// <param name="expectedId">The id the record must carry.</param>
     /// <returns>The CellStructs by key, in record order.</returns>
     /// <exception cref="DatFormatException">Any defect.</exception>
-    public static IReadOnlyList<CellStructRecord> Read(byte[] data, uint expectedId)
+    public static IReadOnlyList<CellStructRecord> Read(byte[] data, uint expectedId) => ByteReader.Strictly(named => Read(data, expectedId, named));
+
+    internal static List<CellStructRecord> Read(byte[] data, uint expectedId, bool named)
     {
-        var r = new ByteReader(data, "Environment " + RecordIds.Text(expectedId));
+        var r = new ByteReader(data, "Environment", expectedId, named);
         uint id = r.U32("id");
         r.Require(id == expectedId, "id", 0, $"record id {RecordIds.Text(id)} is not its name {RecordIds.Text(expectedId)}");
         int count = r.Count(r.U32("numCellStructs"), 4 + 24, "numCellStructs", 4);
@@ -85,16 +87,16 @@ public static class EnvironmentCodec
         for (int i = 0; i < count; i++)
         {
             int at = r.Position;
-            uint key = r.U32($"cellStructs[{i}].key");
-            r.Require(keys.Add(key), $"cellStructs[{i}].key", at, $"duplicate CellStruct key {key}");
-            result.Add(CellStruct(r, key, $"cellStructs[{i}]"));
+            uint key = r.U32(r.Path($"cellStructs[{i}].key"));
+            r.Require(keys.Add(key), r.Path($"cellStructs[{i}].key"), at, $"duplicate CellStruct key {key}");
+            result.Add(CellStruct(r, key, r.Path($"cellStructs[{i}]")));
         }
 
         r.End();
         return result;
     }
 
-    private static CellStructRecord CellStruct(ByteReader r, uint key, string at)
+    private static CellStructRecord CellStruct(ByteReader r, uint key, string? at)
     {
         int countsAt = r.Position;
         uint numPolygons = r.U32(at + ".numPolygons");
@@ -109,7 +111,7 @@ public static class EnvironmentCodec
         var vertexIds = new HashSet<ushort>();
         for (int i = 0; i < numVertices; i++)
         {
-            string f = $"{at}.vertices[{i}]";
+            string? f = r.Path($"{at}.vertices[{i}]");
             int idAt = r.Position;
             ushort id = r.U16(f + ".id");
             r.Require(vertexIds.Add(id), f + ".id", idAt, $"duplicate vertex id {id}");
@@ -126,34 +128,34 @@ public static class EnvironmentCodec
             vertices.Add(new DatVertex(id, origin, normal, uvs));
         }
 
-        var polygons = Polygons(r, numPolygons, at + ".numPolygons", countsAt, at + ".polygons");
+        var polygons = Polygons(r, numPolygons, r.Path($"{at}.numPolygons"), countsAt, r.Path($"{at}.polygons"));
         int portals = r.Count(numPortals, 2, at + ".numPortals", countsAt + 8);
         var portalIds = new ushort[portals];
         for (int i = 0; i < portals; i++)
         {
-            portalIds[i] = r.U16($"{at}.portalPolygonIds[{i}]");
+            portalIds[i] = r.U16(r.Path($"{at}.portalPolygonIds[{i}]"));
         }
 
-        r.Align(at + ".portalPolygonIds");
-        var cellBsp = BspCodec.Read(r, BspTreeType.Cell, at + ".cellBsp");
-        var physics = Polygons(r, numPhysics, at + ".numPhysicsPolygons", countsAt + 4, at + ".physicsPolygons");
-        var physicsBsp = BspCodec.Read(r, BspTreeType.Physics, at + ".physicsBsp");
+        r.Align(r.Path($"{at}.portalPolygonIds"));
+        var cellBsp = BspCodec.Read(r, BspTreeType.Cell, r.Path($"{at}.cellBsp"));
+        var physics = Polygons(r, numPhysics, r.Path($"{at}.numPhysicsPolygons"), countsAt + 4, r.Path($"{at}.physicsPolygons"));
+        var physicsBsp = BspCodec.Read(r, BspTreeType.Physics, r.Path($"{at}.physicsBsp"));
         int hasAt = r.Position;
         uint hasDrawing = r.U32(at + ".hasDrawingBSP");
         r.Require(hasDrawing <= 1, at + ".hasDrawingBSP", hasAt, $"expected 0 or 1, got {hasDrawing}");
-        var drawing = hasDrawing != 0 ? BspCodec.Read(r, BspTreeType.Drawing, at + ".drawingBsp") : null;
-        r.Align(at + " end");
+        var drawing = hasDrawing != 0 ? BspCodec.Read(r, BspTreeType.Drawing, r.Path($"{at}.drawingBsp")) : null;
+        r.Align(r.Path($"{at} end"));
         return new CellStructRecord(key, vertices, polygons, portalIds, cellBsp, physics, physicsBsp, drawing);
     }
 
-    private static List<DatPolygon> Polygons(ByteReader r, uint count, string countField, int countAt, string at)
+    private static List<DatPolygon> Polygons(ByteReader r, uint count, string? countField, int countAt, string? at)
     {
         int n = r.Count(count, 12, countField, countAt);
         var list = new List<DatPolygon>(n);
         var ids = new HashSet<ushort>();
         for (int i = 0; i < n; i++)
         {
-            string f = $"{at}[{i}]";
+            string? f = r.Path($"{at}[{i}]");
             int idAt = r.Position;
             ushort id = r.U16(f + ".id");
             r.Require(ids.Add(id), f + ".id", idAt, $"duplicate polygon id {id}");
@@ -179,7 +181,7 @@ public static class EnvironmentCodec
         return list;
     }
 
-    private static byte[] Bytes(ByteReader r, int n, string field)
+    private static byte[] Bytes(ByteReader r, int n, string? field)
     {
         var b = new byte[n];
         for (int i = 0; i < n; i++)

@@ -88,9 +88,11 @@ public sealed record LandblockInfoRecord(uint Id, uint NumCells, IReadOnlyList<D
     /// <param name="expectedId">The id the record must carry.</param>
     /// <returns>The record.</returns>
     /// <exception cref="DatFormatException">Any defect.</exception>
-    public static LandblockInfoRecord Read(byte[] data, uint expectedId)
+    public static LandblockInfoRecord Read(byte[] data, uint expectedId) => ByteReader.Strictly(named => Read(data, expectedId, named));
+
+    internal static LandblockInfoRecord Read(byte[] data, uint expectedId, bool named)
     {
-        var r = new ByteReader(data, "LandblockInfo " + RecordIds.Text(expectedId));
+        var r = new ByteReader(data, "LandblockInfo", expectedId, named);
         uint id = r.U32("id");
         r.Require(id == expectedId, "id", 0, $"record id {RecordIds.Text(id)} is not its name {RecordIds.Text(expectedId)}");
         uint numCells = r.U32("numCells");
@@ -99,8 +101,8 @@ public sealed record LandblockInfoRecord(uint Id, uint NumCells, IReadOnlyList<D
         var objects = new List<(uint, Vector3, Quaternion)>(n);
         for (int i = 0; i < n; i++)
         {
-            uint oid = r.U32($"objects[{i}].id");
-            var (o, q) = r.Frame($"objects[{i}].frame");
+            uint oid = r.U32(r.Path($"objects[{i}].id"));
+            var (o, q) = r.Frame(r.Path($"objects[{i}].frame"));
             objects.Add((oid, o, q));
         }
 
@@ -111,7 +113,7 @@ public sealed record LandblockInfoRecord(uint Id, uint NumCells, IReadOnlyList<D
         var buildings = new List<DatBuilding>(numBuildings);
         for (int i = 0; i < numBuildings; i++)
         {
-            string f = $"buildings[{i}]";
+            string? f = r.Path($"buildings[{i}]");
             uint model = r.U32(f + ".modelId");
             var (origin, rotation) = r.Frame(f + ".frame");
             uint leaves = r.U32(f + ".numLeaves");
@@ -120,7 +122,7 @@ public sealed record LandblockInfoRecord(uint Id, uint NumCells, IReadOnlyList<D
             var portals = new List<DatBldPortal>(numPortals);
             for (int k = 0; k < numPortals; k++)
             {
-                string g = $"{f}.portals[{k}]";
+                string? g = r.Path($"{f}.portals[{k}]");
                 ushort flags = r.U16(g + ".flags");
                 ushort other = r.U16(g + ".otherCellId");
                 ushort otherPortal = r.U16(g + ".otherPortalId");
@@ -148,7 +150,7 @@ public sealed record LandblockInfoRecord(uint Id, uint NumCells, IReadOnlyList<D
             restrictions = new List<(uint, uint)>(count);
             for (int i = 0; i < count; i++)
             {
-                restrictions.Add((r.U32($"restrictions[{i}].key"), r.U32($"restrictions[{i}].value")));
+                restrictions.Add((r.U32(r.Path($"restrictions[{i}].key")), r.U32(r.Path($"restrictions[{i}].value"))));
             }
         }
 

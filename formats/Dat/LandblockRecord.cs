@@ -1,3 +1,5 @@
+using System.Buffers.Binary;
+
 namespace AcPhys.Spec.Dat;
 
 /// <summary>
@@ -17,21 +19,11 @@ public static class LandblockRecord
     /// <returns>The bytes.</returns>
     public static byte[] WriteFlat(uint id, bool hasObjects)
     {
-        var w = new ByteWriter();
-        w.U32(id);
-        w.U32(hasObjects ? 1u : 0u);
-        for (int i = 0; i < 81; i++)
-        {
-            w.U16(0);
-        }
-
-        for (int i = 0; i < 81; i++)
-        {
-            w.U8(0);
-        }
-
-        w.Align();
-        return w.ToArray();
+        // Everything after the two words is zero: 81 terrain words, 81 height bytes and the pad.
+        var bytes = new byte[Length];
+        BinaryPrimitives.WriteUInt32LittleEndian(bytes, id);
+        BinaryPrimitives.WriteUInt32LittleEndian(bytes.AsSpan(4), hasObjects ? 1u : 0u);
+        return bytes;
     }
 
     /// <summary>Reads a landblock and checks it is flat (scenes carry no terrain).</summary>
@@ -39,9 +31,11 @@ public static class LandblockRecord
     /// <param name="expectedId">The id.</param>
     /// <returns>hasObjects: whether a reader reads the block's LandblockInfo.</returns>
     /// <exception cref="DatFormatException">Not a landblock of this id, hasObjects other than 0 or 1, not flat, or trailing bytes.</exception>
-    public static bool ReadFlat(byte[] data, uint expectedId)
+    public static bool ReadFlat(byte[] data, uint expectedId) => ByteReader.Strictly(named => ReadFlat(data, expectedId, named));
+
+    internal static bool ReadFlat(byte[] data, uint expectedId, bool named)
     {
-        var r = new ByteReader(data, "Landblock " + RecordIds.Text(expectedId));
+        var r = new ByteReader(data, "Landblock", expectedId, named);
         uint id = r.U32("id");
         r.Require(id == expectedId, "id", 0, $"record id {RecordIds.Text(id)} is not its name {RecordIds.Text(expectedId)}");
         uint hasObjects = r.U32("hasObjects");
@@ -49,15 +43,15 @@ public static class LandblockRecord
         for (int i = 0; i < 81; i++)
         {
             int at = r.Position;
-            ushort t = r.U16($"terrain[{i}]");
-            r.Require(t == 0, $"terrain[{i}]", at, $"0x{t:X4}: scenes are flat (expected 0)");
+            ushort t = r.U16(r.Path($"terrain[{i}]"));
+            r.Require(t == 0, r.Path($"terrain[{i}]"), at, $"0x{t:X4}: scenes are flat (expected 0)");
         }
 
         for (int i = 0; i < 81; i++)
         {
             int at = r.Position;
-            byte h = r.U8($"height[{i}]");
-            r.Require(h == 0, $"height[{i}]", at, $"{h}: scenes are flat (expected 0)");
+            byte h = r.U8(r.Path($"height[{i}]"));
+            r.Require(h == 0, r.Path($"height[{i}]"), at, $"{h}: scenes are flat (expected 0)");
         }
 
         r.Align("height");

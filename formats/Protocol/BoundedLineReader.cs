@@ -1,3 +1,4 @@
+using System.Diagnostics;
 using System.Text;
 
 namespace AcPhys.Spec.Protocol;
@@ -43,14 +44,24 @@ public sealed class BoundedLineReader
     /// <summary>Reads the next line.</summary>
     /// <returns>The line without its end, or null at end of input.</returns>
     /// <exception cref="LineTooLongException">The line is longer than <see cref="MaxBytes"/>; the next call reads the line after it.</exception>
-    public string? ReadLine() => ReadLineAsync().AsTask().GetAwaiter().GetResult();
+    /// <remarks>Synchronous all the way down: the stream's own blocking read, no pool thread and no spin-wait per fill
+    /// (a standard-input stream's ReadAsync runs its Read on a pool thread; waiting on that cost <c>serve</c> a
+    /// sched_yield storm per request, issue 26).</remarks>
+    public string? ReadLine()
+    {
+        var pending = Read(synchronous: true);
+        Debug.Assert(pending.IsCompleted, "a synchronous read completes before it returns");
+        return pending.GetAwaiter().GetResult();
+    }
 
     /// <summary>Reads the next line without holding a thread while the peer is silent (the ProcessAdapter waits on it with a timeout).</summary>
     /// <returns>The line without its end, or null at end of input.</returns>
     /// <exception cref="LineTooLongException">The line is longer than <see cref="MaxBytes"/>; the next call reads the line after it.</exception>
-    public async ValueTask<string?> ReadLineAsync()
+    public ValueTask<string?> ReadLineAsync() => Read(synchronous: false);
+
+    private async ValueTask<string?> Read(bool synchronous)
     {
-        if (skipping && !await SkipRestAsync().ConfigureAwait(false))
+        if (skipping && !await SkipRestAsync(synchronous).ConfigureAwait(false))
         {
             return null;
         }
@@ -58,7 +69,7 @@ public sealed class BoundedLineReader
         line.SetLength(0);
         while (true)
         {
-            if (start == end && !await FillAsync().ConfigureAwait(false))
+            if (start == end && !await FillAsync(synchronous).ConfigureAwait(false))
             {
                 return line.Length == 0 ? null : Text();
             }
@@ -101,10 +112,12 @@ public sealed class BoundedLineReader
         return Encoding.UTF8.GetString(bytes);
     }
 
-    private async ValueTask<bool> FillAsync()
+    private async ValueTask<bool> FillAsync(bool synchronous)
     {
         start = 0;
-        end = await stream.ReadAsync(buffer.AsMemory(0, buffer.Length)).ConfigureAwait(false);
+        end = synchronous
+            ? stream.Read(buffer, 0, buffer.Length)
+            : await stream.ReadAsync(buffer.AsMemory(0, buffer.Length)).ConfigureAwait(false);
         if (!started && end > 0)
         {
             started = true;
@@ -114,15 +127,15 @@ public sealed class BoundedLineReader
             }
         }
 
-        return end > start || (end > 0 && await FillAsync().ConfigureAwait(false));
+        return end > start || (end > 0 && await FillAsync(synchronous).ConfigureAwait(false));
     }
 
     // Skips to just after the next newline; false at end of input.
-    private async ValueTask<bool> SkipRestAsync()
+    private async ValueTask<bool> SkipRestAsync(bool synchronous)
     {
         while (true)
         {
-            if (start == end && !await FillAsync().ConfigureAwait(false))
+            if (start == end && !await FillAsync(synchronous).ConfigureAwait(false))
             {
                 skipping = false;
                 return false;

@@ -68,7 +68,7 @@ public static class DatWire
 
         try
         {
-            var manifest = WireProfile.Time("dat read: manifest JSON", () => DatManifestJson.Read(Wire.Field(field, "manifest").GetRawText(), "dat.manifest"));
+            var manifest = WireProfile.Time("dat read: manifest JSON", () => DatManifestJson.Read(Wire.Field(field, "manifest"), "dat.manifest"));
             var listed = manifest.Records.Select(r => r.File).ToHashSet(StringComparer.Ordinal);
             if (bytes.Keys.FirstOrDefault(k => !listed.Contains(k)) is { } extra)
             {

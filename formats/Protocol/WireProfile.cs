@@ -72,6 +72,9 @@ public static class WireProfile
         var lines = Totals.OrderBy(e => e.Key, StringComparer.Ordinal).Select(e => string.Create(
             CultureInfo.InvariantCulture,
             $"  {e.Key,-48} {Stopwatch.GetElapsedTime(0, e.Value[0]).TotalMilliseconds,10:0.0} ms {e.Value[1],9} x {Stopwatch.GetElapsedTime(0, e.Value[0]).TotalMilliseconds * 1000 / Math.Max(1, e.Value[1]),9:0.0} µs"));
-        Console.Error.WriteLine($"wire profile (pid {Environment.ProcessId}, {Process.GetCurrentProcess().TotalProcessorTime.TotalSeconds:0.0} s CPU):{Environment.NewLine}{string.Join(Environment.NewLine, lines)}");
+        string gc = string.Create(
+            CultureInfo.InvariantCulture,
+            $"  gc: {GC.CollectionCount(0)} gen0, {GC.CollectionCount(1)} gen1, {GC.CollectionCount(2)} gen2; paused {GC.GetTotalPauseDuration().TotalMilliseconds:0} ms; allocated {GC.GetTotalAllocatedBytes() / (1024.0 * 1024):0} MiB; JIT {System.Runtime.JitInfo.GetCompilationTime().TotalMilliseconds:0} ms ({System.Runtime.JitInfo.GetCompiledMethodCount()} methods)");
+        Console.Error.WriteLine($"wire profile (pid {Environment.ProcessId}, {Process.GetCurrentProcess().TotalProcessorTime.TotalSeconds:0.0} s CPU):{Environment.NewLine}{gc}{Environment.NewLine}{string.Join(Environment.NewLine, lines)}");
     }
 }
