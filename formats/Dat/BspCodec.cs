@@ -47,15 +47,15 @@ public static class BspCodec
                 w.Sphere(node.Sphere);
                 w.U32((uint)node.Polygons.Count);
                 w.U32((uint)node.Portals.Count);
-                foreach (ushort id in node.Polygons)
+                for (int i = 0; i < node.Polygons.Count; i++)
                 {
-                    w.U16(id);
+                    w.U16(node.Polygons[i]);
                 }
 
-                foreach (var (portal, polygon) in node.Portals)
+                for (int i = 0; i < node.Portals.Count; i++)
                 {
-                    w.I16(portal);
-                    w.I16(polygon);
+                    w.I16(node.Portals[i].Portal);
+                    w.I16(node.Portals[i].Polygon);
                 }
             }
 
@@ -144,9 +144,9 @@ public static class BspCodec
     private static void Ids(ByteWriter w, IReadOnlyList<ushort> ids)
     {
         w.U32((uint)ids.Count);
-        foreach (ushort id in ids)
+        for (int i = 0; i < ids.Count; i++)
         {
-            w.U16(id);
+            w.U16(ids[i]);
         }
     }
 

@@ -61,19 +61,33 @@ public static class CellStructBuilder
         foreach (var piece in pieces)
         {
             int first = vertices.Count;
-            vertices.AddRange(piece.Vertices.Select((v, i) => Vertex(first + i, v)));
-            var faces = new List<ushort>();
-            foreach (var plane in piece.Planes)
+            var corners = piece.Vertices;
+            for (int i = 0; i < corners.Count; i++)
             {
-                var on = Enumerable.Range(0, piece.Vertices.Count).Where(i => MathF.Abs(plane.Distance(piece.Vertices[i])) <= 1e-3f).ToList();
-                if (on.Count < 3)
+                vertices.Add(Vertex(first + i, corners[i]));
+            }
+
+            var faces = new List<ushort>(piece.Planes.Count);
+            var on = new int[corners.Count];
+            for (int k = 0; k < piece.Planes.Count; k++)
+            {
+                var plane = piece.Planes[k];
+                int n = 0;
+                for (int i = 0; i < corners.Count; i++)
+                {
+                    if (MathF.Abs(plane.Distance(corners[i])) <= 1e-3f)
+                    {
+                        on[n++] = i;
+                    }
+                }
+
+                if (n < 3)
                 {
                     continue;
                 }
 
-                var ordered = Wind(on, i => piece.Vertices[i], plane.Normal);
                 faces.Add(checked((ushort)polygons.Count));
-                polygons.Add(Polygon(polygons.Count, [.. ordered.Select(i => (short)(first + i))]));
+                polygons.Add(Polygon(polygons.Count, Wind(on.AsSpan(0, n), corners, plane.Normal, first)));
             }
 
             facesOf.Add([.. faces]);
@@ -155,11 +169,46 @@ public static class CellStructBuilder
         return next;
     }
 
-    private static List<int> Wind(List<int> ids, Func<int, Vector3> at, Vector3 normal)
+    // The face's corners counter-clockwise about its normal: by angle around their centroid, ties in corner order.
+    private static short[] Wind(ReadOnlySpan<int> on, IReadOnlyList<Vector3> corners, Vector3 normal, int first)
     {
         var (u, v) = PolygonPlane.Tangents(Vector3.Normalize(normal));
-        var centroid = ids.Aggregate(Vector3.Zero, (s, i) => s + at(i)) / ids.Count;
-        return [.. ids.OrderBy(i => MathF.Atan2(Vector3.Dot(at(i) - centroid, v), Vector3.Dot(at(i) - centroid, u)))];
+        var sum = Vector3.Zero;
+        foreach (int i in on)
+        {
+            sum += corners[i];
+        }
+
+        var centroid = sum / on.Length;
+        var angle = new float[on.Length];
+        var order = new int[on.Length];
+        for (int k = 0; k < on.Length; k++)
+        {
+            var d = corners[on[k]] - centroid;
+            angle[k] = MathF.Atan2(Vector3.Dot(d, v), Vector3.Dot(d, u));
+            order[k] = k;
+        }
+
+        // Stable insertion sort with float.CompareTo (NaN first), the order a LINQ OrderBy on the angle gives.
+        for (int k = 1; k < order.Length; k++)
+        {
+            int x = order[k], j = k - 1;
+            while (j >= 0 && angle[order[j]].CompareTo(angle[x]) > 0)
+            {
+                order[j + 1] = order[j];
+                j--;
+            }
+
+            order[j + 1] = x;
+        }
+
+        var ids = new short[on.Length];
+        for (int k = 0; k < ids.Length; k++)
+        {
+            ids[k] = (short)(first + on[order[k]]);
+        }
+
+        return ids;
     }
 
     private static DatVertex Vertex(int id, Vector3 p) => new(checked((ushort)id), p, Vector3.UnitZ, [Vector2.Zero]);

@@ -15,45 +15,48 @@ public static class EnvironmentCodec
     /// <returns>The bytes.</returns>
     public static byte[] Write(uint id, IReadOnlyList<CellStructRecord> structs)
     {
+        // Index loops throughout: a foreach over an IReadOnlyList allocates an enumerator per list, per vertex and polygon.
         var w = new ByteWriter();
         w.U32(id);
         w.U32((uint)structs.Count);
-        foreach (var s in structs)
+        for (int k = 0; k < structs.Count; k++)
         {
+            var s = structs[k];
             w.U32(s.Key);
             w.U32((uint)s.Polygons.Count);
             w.U32((uint)s.PhysicsPolygons.Count);
             w.U32((uint)s.PortalPolygonIds.Count);
             w.I32(1); // vertex type: must be 1
             w.U32((uint)s.Vertices.Count);
-            foreach (var v in s.Vertices)
+            for (int i = 0; i < s.Vertices.Count; i++)
             {
+                var v = s.Vertices[i];
                 w.U16(v.Id);
                 w.U16((ushort)v.Uvs.Count);
                 w.Vec(v.Origin);
                 w.Vec(v.Normal);
-                foreach (var uv in v.Uvs)
+                for (int u = 0; u < v.Uvs.Count; u++)
                 {
-                    w.F32(uv.X);
-                    w.F32(uv.Y);
+                    w.F32(v.Uvs[u].X);
+                    w.F32(v.Uvs[u].Y);
                 }
             }
 
-            foreach (var p in s.Polygons)
+            for (int i = 0; i < s.Polygons.Count; i++)
             {
-                Polygon(w, p);
+                Polygon(w, s.Polygons[i]);
             }
 
-            foreach (ushort p in s.PortalPolygonIds)
+            for (int i = 0; i < s.PortalPolygonIds.Count; i++)
             {
-                w.U16(p);
+                w.U16(s.PortalPolygonIds[i]);
             }
 
             w.Align();
             BspCodec.Write(w, s.CellBsp, BspTreeType.Cell);
-            foreach (var p in s.PhysicsPolygons)
+            for (int i = 0; i < s.PhysicsPolygons.Count; i++)
             {
-                Polygon(w, p);
+                Polygon(w, s.PhysicsPolygons[i]);
             }
 
             BspCodec.Write(w, s.PhysicsBsp, BspTreeType.Physics);
@@ -200,24 +203,24 @@ public static class EnvironmentCodec
         w.I32(p.SidesType);
         w.I16(p.PosSurface);
         w.I16(p.NegSurface);
-        foreach (short v in p.VertexIds)
+        for (int i = 0; i < p.VertexIds.Count; i++)
         {
-            w.I16(v);
+            w.I16(p.VertexIds[i]);
         }
 
         if (p.HasPosUvs)
         {
-            foreach (byte b in p.PosUvs)
+            for (int i = 0; i < p.PosUvs.Count; i++)
             {
-                w.U8(b);
+                w.U8(p.PosUvs[i]);
             }
         }
 
         if (p.HasNegUvs)
         {
-            foreach (byte b in p.NegUvs)
+            for (int i = 0; i < p.NegUvs.Count; i++)
             {
-                w.U8(b);
+                w.U8(p.NegUvs[i]);
             }
         }
     }
