@@ -59,12 +59,13 @@ public static class IndoorInvariants
                 var s = trace[i];
                 var prev = trace[i - 1].Current;
                 var c = Center(s);
-                if (prev.IsNone || !s.Cells.Contains(prev) || !SceneOracle.IsLoaded(w.Scene, prev) || !SceneQuery.Contains(built, s.Query.Cell, prev, c, default))
+                if (prev.IsNone || !s.Cells.Contains(prev) || !SceneOracle.IsLoaded(w.Scene, prev) || !SceneQuery.Contains(built, s.Query.Cell, prev, c, impl.Indoor))
                 {
                     continue;
                 }
 
-                if (prev.IsLand && s.Cells.Any(id => id.IsEnv && SceneOracle.IsLoadedEnv(w.Scene, id) && SceneQuery.Contains(built, s.Query.Cell, id, c, default)))
+                // A cell without portals contains nothing under retail's point_in_cell, but does under a declared ace-no-portal-guard (facts §5.5, §7 #13).
+                if (prev.IsLand && s.Cells.Any(id => id.IsEnv && SceneOracle.IsLoadedEnv(w.Scene, id) && SceneQuery.Contains(built, s.Query.Cell, id, c, impl.Indoor)))
                 {
                     continue;
                 }
@@ -83,8 +84,8 @@ public static class IndoorInvariants
     /// <summary>PORTAL-TRANSIT.</summary>
     public static readonly Invariant<SceneWalk> PortalTransit = new(
         "PORTAL-TRANSIT",
-        "With steps no longer than the radius: a centre inside a loaded env cell by 1 mm on two steps running is in that cell after the second (no absorbing outdoor state), except while the position is a land cell framed in another block than the cell (facts §6.11: retail does not re-frame the building test) or the cell is not directly behind a valid building portal whose building's land cell is a candidate (facts §5.3: a building is reached only through the land cell it is attached to); a centre clear of every cell on two steps running over loaded land, queried from a loaded cell, is in a land cell (no absorbing indoor state); neither clause applies while the client still holds a cell it lost for a reason NEVER-NULL excuses; and a load hint for an unloaded cell behind the position's portal appears exactly when a sphere reaches past r + EPS toward it.",
-        "facts §5.1, §5.3, §5.4, §6.9, §6.11",
+        "With steps no longer than the radius: a centre inside a loaded env cell by 1 mm on two steps running is in that cell after the second (no absorbing outdoor state), except while the position is a land cell framed in another block than the cell (facts §6.11: retail does not re-frame the building test) or the cell is not directly behind a valid building portal whose building's land cell is a candidate (facts §5.3: a building is reached only through the land cell it is attached to); a centre clear of every cell on two steps running over loaded land, queried from a loaded cell, is in a land cell (no absorbing indoor state); neither clause applies while the client still holds a cell it lost for a reason NEVER-NULL excuses; and a load hint for an unloaded cell behind the position's portal appears when a sphere reaches past r + EPS toward it, and is absent when no sphere reaches that portal nor a portal of another loaded cell to the same cell (the transit closure walks those too).",
+        "facts §4 step 4a, §5.1, §5.3, §5.4, §6.9, §6.11",
         Op.None,
         SceneDomain.Instance,
         (impl, w) =>
@@ -101,7 +102,7 @@ public static class IndoorInvariants
             {
                 var s = trace[i];
                 var c = Center(s);
-                if (LoadHintMismatch(w, s) is string hint)
+                if (LoadHintMismatch(w, s, impl.Indoor) is string hint)
                 {
                     return Outcome.ViolatedAt(s.Index, $"step {s.Index}: {hint}");
                 }
@@ -593,9 +594,17 @@ public static class IndoorInvariants
     private static IEnumerable<CellId> Neighbourhood(Scene scene, CellId a) =>
         scene.Cells.Where(c => c.Id == a || PortalLinked(scene, a, c.Id)).Select(c => c.Id).Append(a).Distinct();
 
-    // The position's own portals into unloaded cells: a hint iff some sphere reaches past r + EPS toward the other side,
-    // the side read from the geometry (the cell's box centre), not from PortalSide.
-    private static string? LoadHintMismatch(SceneWalk w, WalkStep s)
+    // The position's own portals into unloaded cells, the side read from the geometry (the cell's box centre), not from
+    // PortalSide. A sphere reaching past one by r + EPS gives the hint: the position is walked first (facts §4 step 3,
+    // §5.1). A hint given while no sphere reaches it is wrong only if no other cell the closure may walk gives it either:
+    // the transit closure walks every cell it adds, and any of them with a portal to the same unloaded cell adds the
+    // same hint when a sphere reaches that portal's infinite plane (facts §4 step 4a, §5.1). Which cells were walked is
+    // over-approximated by the loaded env cells of the block within r + 0.01 + 1 mm of a sphere (a neighbour or a
+    // building's cell is added only when the BSP sphere test, padded 0.01, takes it in: §5.1, §5.3, §5.7; the filter
+    // may drop a walked cell after its hint was added, and never drops a hint, §4 step 5), so this direction never
+    // accuses a hint retail gives.
+    // Under a declared ace-load-hint-low-key the hint is looked for under ACE's key, the bare 16-bit id (facts §7 #11).
+    private static string? LoadHintMismatch(SceneWalk w, WalkStep s, IndoorFidelity fidelity)
     {
         var cell = SceneOracle.Cell(w.Scene, s.Query.Cell);
         if (cell is null || !SceneOracle.IsLoadedEnv(w.Scene, cell.Id))
@@ -611,23 +620,45 @@ public static class IndoorInvariants
                 continue;
             }
 
-            bool reaches = false, tie = false;
-            foreach (var sphere in s.Query.Spheres)
+            var (reaches, tie) = Reach(outward, s);
+            bool given = s.Cells.Contains(fidelity.AceLoadHintLowKey ? new CellId(other.Low) : other);
+            if (tie || reaches == given)
             {
-                double slack = outward.Past(sphere.Center) + sphere.Radius + LandDefs.Epsilon;
-                tie |= Math.Abs(slack) < Margin;
-                reaches |= slack > 0;
+                continue;
             }
 
-            if (!tie && reaches != s.Cells.Contains(other))
+            if (reaches)
             {
-                return reaches
-                    ? $"a sphere reaches past the portal of {cell.Id} toward unloaded {other} but no load hint was given"
-                    : $"load hint {other} given although every sphere is wholly on {cell.Id}'s side of the portal";
+                return $"a sphere reaches past the portal of {cell.Id} toward unloaded {other} but no load hint was given";
+            }
+
+            if (!HintedElsewhere(w.Scene, cell, other, s))
+            {
+                return $"load hint {other} given although every sphere is wholly on {cell.Id}'s side of the portal, and no other loaded cell's portal to it is reached";
             }
         }
 
         return null;
+    }
+
+    // Whether another loaded env cell the closure may have walked has a portal to the unloaded cell whose plane a sphere reaches (or ties).
+    private static bool HintedElsewhere(Scene scene, SceneCell own, CellId other, WalkStep s) =>
+        scene.Cells.Where(c => c.Id != own.Id && c.Id.Landblock == other.Landblock && SceneOracle.IsLoadedEnv(scene, c.Id)
+                && s.Query.Spheres.Any(sp => SceneOracle.Depth(c, s.Query.Cell, sp.Center) >= -(sp.Radius + 0.01 + Margin)))
+            .Any(c => Outward(c).Any(o => !o.Portal.IsExit && c.Id.WithLow(o.Portal.Other) == other && Reach(o, s) is (true, _) or (_, true)));
+
+    // Whether a sphere reaches past a portal's plane by r + EPS, and whether one is within 1 mm of that (a tie).
+    private static (bool Reaches, bool Tie) Reach(OutwardPortal outward, WalkStep s)
+    {
+        bool reaches = false, tie = false;
+        foreach (var sphere in s.Query.Spheres)
+        {
+            double slack = outward.Past(sphere.Center) + sphere.Radius + LandDefs.Epsilon;
+            tie |= Math.Abs(slack) < Margin;
+            reaches |= slack > 0;
+        }
+
+        return (reaches, tie);
     }
 
     // A cell's portals with their planes normalised and the cell's own side read from the geometry (piece 0's box

@@ -1,0 +1,99 @@
+using AcPhys.Core;
+using AcPhys.Props.Support;
+using AcPhys.Spec.Adapters;
+using AcPhys.Spec.Invariants;
+using AcPhys.Spec.Judging;
+using AcPhys.Spec.Running;
+
+namespace AcPhys.Props.Judging;
+
+/// <summary>
+/// Issue 27, "no false alarm from the reference in every declared mode": a retail statement a declared deviation breaks by
+/// design is NOT TESTED under that declaration, with the switch named, and still judged (and failed) when the same
+/// deviation is served while retail is declared.
+/// </summary>
+public sealed class BrokenByDesignTests
+{
+    /// <summary>Gets every (switch, invariant) pair the table exempts.</summary>
+    public static TheoryData<string, string> Exempted
+    {
+        get
+        {
+            var data = new TheoryData<string, string>();
+            foreach (var (name, id) in BrokenByDesign.Exempted)
+            {
+                data.Add(name, id);
+            }
+
+            return data;
+        }
+    }
+
+    [Theory(DisplayName = "a retail statement a declared deviation breaks by design is NOT TESTED under it, naming the switch")]
+    [MemberData(nameof(Exempted))]
+    public void DeclaredIsNotTested(string name, string id)
+    {
+        var invariant = InvariantCatalogue.Find(id)!;
+        var result = invariant.Run(Declaring(name, PickPolicy.Retail), 50, PropertyRun.SeedFor(id));
+        Assert.Equal(ResultStatus.NotTested, result.Status);
+        Assert.Contains($"the declared {name} breaks by design (facts §7", result.NotTestedReason, StringComparison.Ordinal);
+    }
+
+    [Theory(DisplayName = "the same statement FAILS when the deviation is served while retail is declared (the exemption is measured, and the gate still bites)")]
+    [MemberData(nameof(Exempted))]
+    public void ServedUndeclaredFails(string name, string id)
+    {
+        var undeclared = new DeclaresRetail(Declaring(name, PickPolicy.Retail));
+        var invariant = InvariantCatalogue.Find(id)!;
+        Assert.Null(invariant.WhyNotTestable(undeclared));
+        var result = invariant.Run(undeclared, 1_000, PropertyRun.SeedFor(id), maxClasses: 1);
+        Assert.Equal(ResultStatus.Failed, result.Status);
+    }
+
+    [Fact(DisplayName = "FIND-CELL-CONFORMANCE and the other conformance invariants: never exempted; they compare in the declared mode")]
+    public void ConformanceIsNeverExempted()
+    {
+        var ace = Declaring(FidelityNames.Ace, PickPolicy.Retail);
+        Assert.All(ConformanceInvariants.All, c => Assert.Null(c.WhyNotTestable(ace)));
+        Assert.DoesNotContain(BrokenByDesign.Exempted, e => ConformanceInvariants.All.Any(c => c.Id == e.InvariantId));
+        Assert.All(BrokenByDesign.Exempted, e => Assert.NotNull(InvariantCatalogue.Find(e.InvariantId)));
+    }
+
+    [Fact(DisplayName = "retail declared: no invariant is exempted, only the operations and the pick decide what is tested")]
+    public void RetailExemptsNothing() =>
+        Assert.All(InvariantCatalogue.All, i => Assert.Equal(i.WhyNotTestable(Op.All, PickPolicy.Retail), i.WhyNotTestable(ReferenceAdapter.Instance)));
+
+    [Fact(DisplayName = "VISIBILITY under ace: every declared switch that breaks it is named")]
+    public void EverySwitchIsNamed()
+    {
+        string? why = IndoorInvariants.Visibility.WhyNotTestable(Declaring(FidelityNames.Ace, PickPolicy.Retail));
+        Assert.Equal(
+            "a retail statement the declared ace-keeps-stale-cells, ace-early-return, ace-neighbour-via-visible-cells break by design "
+            + "(facts §7 #6, §4 step 1: the array is not cleared between calls; §7 #7, §4 step 5: an interior pick returns before the visibility filter; "
+            + "§7 #10, §5.1: a neighbour the cell does not see is added as a load hint)",
+            why);
+    }
+
+    [Fact(DisplayName = "HYSTERESIS-INDOOR: judged under a declared ace-no-portal-guard with the guard honoured (a land cell yields to the sealed closet that contains the centre), and still fails it undeclared")]
+    public void HysteresisIndoorHonoursThePortalGuard()
+    {
+        var seed = PropertyRun.SeedFor("HYSTERESIS-INDOOR");
+        var declared = Declaring("ace-no-portal-guard", PickPolicy.CurrentFirst);
+        Assert.Equal(ResultStatus.Passed, IndoorInvariants.HysteresisIndoor.Run(declared, 1_000, seed).Status);
+        Assert.Equal(ResultStatus.Failed, IndoorInvariants.HysteresisIndoor.Run(new DeclaresRetail(declared), 1_000, seed, maxClasses: 1).Status);
+    }
+
+    internal static ReferenceAdapter Declaring(string name, PickPolicy pick)
+    {
+        Assert.True(FidelityNames.TryParse([name], out var indoor, out var outdoor, out _), name);
+        return new ReferenceAdapter(pick, outdoor: outdoor) { Indoor = indoor };
+    }
+
+    // The reference serving a deviation while its declaration says retail (the pick it declares is kept).
+    private sealed class DeclaresRetail(ICellPhysics inner) : Forwarding(inner)
+    {
+        public override IndoorFidelity Indoor => IndoorFidelity.Retail;
+
+        public override OutdoorFidelity Outdoor => OutdoorFidelity.Retail;
+    }
+}
