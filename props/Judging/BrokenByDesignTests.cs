@@ -34,7 +34,7 @@ public sealed class BrokenByDesignTests
     public void DeclaredIsNotTested(string name, string id)
     {
         var invariant = InvariantCatalogue.Find(id)!;
-        var result = invariant.Run(Declaring(name, PickPolicy.Retail), 50, PropertyRun.SeedFor(id));
+        var result = invariant.Run(DeclaredModes.Declaring(name, PickPolicy.Retail), 50, PropertyRun.SeedFor(id));
         Assert.Equal(ResultStatus.NotTested, result.Status);
         Assert.Contains($"the declared {name} breaks by design (facts §7", result.NotTestedReason, StringComparison.Ordinal);
     }
@@ -43,7 +43,7 @@ public sealed class BrokenByDesignTests
     [MemberData(nameof(Exempted))]
     public void ServedUndeclaredFails(string name, string id)
     {
-        var undeclared = new DeclaresRetail(Declaring(name, PickPolicy.Retail));
+        var undeclared = DeclaredModes.DeclaringRetail(DeclaredModes.Declaring(name, PickPolicy.Retail));
         var invariant = InvariantCatalogue.Find(id)!;
         Assert.Null(invariant.WhyNotTestable(undeclared));
         var result = invariant.Run(undeclared, 1_000, PropertyRun.SeedFor(id), maxClasses: 1);
@@ -53,7 +53,7 @@ public sealed class BrokenByDesignTests
     [Fact(DisplayName = "FIND-CELL-CONFORMANCE and the other conformance invariants: never exempted; they compare in the declared mode")]
     public void ConformanceIsNeverExempted()
     {
-        var ace = Declaring(FidelityNames.Ace, PickPolicy.Retail);
+        var ace = DeclaredModes.Declaring(FidelityNames.Ace, PickPolicy.Retail);
         Assert.All(ConformanceInvariants.All, c => Assert.Null(c.WhyNotTestable(ace)));
         Assert.DoesNotContain(BrokenByDesign.Exempted, e => ConformanceInvariants.All.Any(c => c.Id == e.InvariantId));
         Assert.All(BrokenByDesign.Exempted, e => Assert.NotNull(InvariantCatalogue.Find(e.InvariantId)));
@@ -66,34 +66,10 @@ public sealed class BrokenByDesignTests
     [Fact(DisplayName = "VISIBILITY under ace: every declared switch that breaks it is named")]
     public void EverySwitchIsNamed()
     {
-        string? why = IndoorInvariants.Visibility.WhyNotTestable(Declaring(FidelityNames.Ace, PickPolicy.Retail));
+        string? why = IndoorInvariants.Visibility.WhyNotTestable(DeclaredModes.Declaring(FidelityNames.Ace, PickPolicy.Retail));
         Assert.Equal(
-            "a retail statement the declared ace-keeps-stale-cells, ace-early-return, ace-neighbour-via-visible-cells break by design "
-            + "(facts §7 #6, §4 step 1: the array is not cleared between calls; §7 #7, §4 step 5: an interior pick returns before the visibility filter; "
-            + "§7 #10, §5.1: a neighbour the cell does not see is added as a load hint)",
+            "a retail statement the declared ace-keeps-stale-cells, ace-neighbour-via-visible-cells break by design "
+            + "(facts §7 #6, §4 step 1: the array is not cleared between calls; §7 #10, §5.1: a neighbour the cell does not see is added as a load hint)",
             why);
-    }
-
-    [Fact(DisplayName = "HYSTERESIS-INDOOR: judged under a declared ace-no-portal-guard with the guard honoured (a land cell yields to the sealed closet that contains the centre), and still fails it undeclared")]
-    public void HysteresisIndoorHonoursThePortalGuard()
-    {
-        var seed = PropertyRun.SeedFor("HYSTERESIS-INDOOR");
-        var declared = Declaring("ace-no-portal-guard", PickPolicy.CurrentFirst);
-        Assert.Equal(ResultStatus.Passed, IndoorInvariants.HysteresisIndoor.Run(declared, 1_000, seed).Status);
-        Assert.Equal(ResultStatus.Failed, IndoorInvariants.HysteresisIndoor.Run(new DeclaresRetail(declared), 1_000, seed, maxClasses: 1).Status);
-    }
-
-    internal static ReferenceAdapter Declaring(string name, PickPolicy pick)
-    {
-        Assert.True(FidelityNames.TryParse([name], out var indoor, out var outdoor, out _), name);
-        return new ReferenceAdapter(pick, outdoor: outdoor) { Indoor = indoor };
-    }
-
-    // The reference serving a deviation while its declaration says retail (the pick it declares is kept).
-    private sealed class DeclaresRetail(ICellPhysics inner) : Forwarding(inner)
-    {
-        public override IndoorFidelity Indoor => IndoorFidelity.Retail;
-
-        public override OutdoorFidelity Outdoor => OutdoorFidelity.Retail;
     }
 }

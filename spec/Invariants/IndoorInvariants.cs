@@ -214,6 +214,11 @@ public static class IndoorInvariants
                     continue;
                 }
 
+                if (impl.Indoor.AceEarlyReturn && s.Containing.IsEnv)
+                {
+                    continue; // a declared ace-early-return: after an interior pick ACE returns before the filter (facts §7 #7)
+                }
+
                 applied = true;
                 foreach (var id in s.Cells)
                 {
@@ -281,6 +286,15 @@ public static class IndoorInvariants
                 return Outcome.Vacuous;
             }
 
+            // A declared ace-load-hint-low-key keys hints by the bare 16-bit id, which no move changes (facts §7 #11); in a
+            // scene holding block 0x0000 such a key cannot be told from a cell id, so the case is not judged.
+            bool lowKey = impl.Indoor.AceLoadHintLowKey;
+            if (lowKey && blocks.Any(b => b.X == 0 && b.Y == 0))
+            {
+                return Outcome.Vacuous;
+            }
+
+            CellId Moved(CellId id) => lowKey && id.IsEnv && id.BlockX == 0 && id.BlockY == 0 ? id : Move(id, dx, dy);
             var moved = new SceneWalk(w.Scene.Translated(dx, dy), w.Walk with { StartCell = Move(w.Walk.StartCell, dx, dy) });
             var a = SceneWalkRunner.Run(impl, w);
             var b = SceneWalkRunner.Run(impl, moved);
@@ -292,7 +306,7 @@ public static class IndoorInvariants
                     return Outcome.Vacuous;
                 }
 
-                var expected = x.Cells.Select(id => Move(id, dx, dy)).ToList();
+                var expected = x.Cells.Select(Moved).ToList();
                 if (!expected.SequenceEqual(y.Cells) || Move(x.Containing, dx, dy) != y.Containing)
                 {
                     return Outcome.ViolatedAt(x.Index, $"step {x.Index}: moved by ({dx}, {dy}) blocks the answer is [{string.Join(", ", y.Cells)}] → {y.Containing}, expected [{string.Join(", ", expected)}] → {Move(x.Containing, dx, dy)}");
@@ -381,7 +395,7 @@ public static class IndoorInvariants
         {
             foreach (var s in SceneWalkRunner.Run(impl, w))
             {
-                if (Unreachable(w.Scene, s) is string why)
+                if (Unreachable(w.Scene, s, impl.Indoor.AceLoadHintLowKey) is string why)
                 {
                     return Outcome.ViolatedAt(s.Index, $"step {s.Index}: {why}");
                 }
@@ -397,7 +411,8 @@ public static class IndoorInvariants
 
     private static Vector3 Center(WalkStep s) => s.Query.Spheres[0].Center;
 
-    private static string? Unreachable(Scene scene, WalkStep s)
+    // lowKey: a declared ace-load-hint-low-key, under which a load hint carries the portal's bare 16-bit id (facts §7 #11).
+    private static string? Unreachable(Scene scene, WalkStep s, bool lowKey)
     {
         if (s.Cells.Distinct().Count() != s.Cells.Count)
         {
@@ -421,7 +436,7 @@ public static class IndoorInvariants
             }
             else
             {
-                near = id == s.Query.Cell || s.Cells.Any(c => SceneOracle.Cell(scene, c) is { } owner && owner.Portals.Any(p => !p.IsExit && owner.Id.WithLow(p.Other) == id));
+                near = id == s.Query.Cell || s.Cells.Any(c => SceneOracle.Cell(scene, c) is { } owner && owner.Portals.Any(p => !p.IsExit && (owner.Id.WithLow(p.Other) == id || (lowKey && new CellId(p.Other) == id))));
             }
 
             if (!near)

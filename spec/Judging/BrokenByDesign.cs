@@ -15,9 +15,12 @@ namespace AcPhys.Spec.Judging;
 /// <remarks>
 /// One row per switch, measured on the unfaulted reference (<c>acphys verify --cases 1000 --fidelity SWITCH</c>, pr base
 /// seed; docs/facts-coverage.md, "No false alarm from the reference") and each row's invariants checked against the ACE
-/// difference it names in facts §7 (and §4, where the step is described). Switches that break nothing have no row:
-/// ace-filter-outside-guard, ace-outside-by-cell-id, ace-no-portal-guard (the oracles honour it,
-/// <see cref="SceneOracle.Pickable"/>), drop-unloaded-land-cells, ace-transition-filter, reframe-transit and double.
+/// difference it names in facts §7 (and §4 or §5, where the step is described). Where an oracle can honour a switch
+/// it judges under it instead: ace-early-return (VISIBILITY skips the steps after an interior pick), ace-load-hint-low-key
+/// (PORTAL-TRANSIT, SCENE-SOUNDNESS and SCENE-TRANSLATION read a hint under its 16-bit key) and ace-no-portal-guard
+/// (<see cref="SceneOracle.Pickable"/>, HYSTERESIS-INDOOR); those switches, and the ones that break nothing measured
+/// (ace-filter-outside-guard, ace-outside-by-cell-id, drop-unloaded-land-cells, ace-transition-filter, reframe-transit,
+/// double), have no row.
 /// </remarks>
 public static class BrokenByDesign
 {
@@ -28,17 +31,9 @@ public static class BrokenByDesign
         // a cell already held is not appended again where retail's walk would reach it.
         new("ace-keeps-stale-cells", "§7 #6, §4 step 1: the array is not cleared between calls", ["PORTAL-TRANSIT", "NO-TUNNEL", "VISIBILITY", "SCENE-TRANSLATION", "NEVER-NULL", "SCENE-SOUNDNESS", "ENV-CANDIDATE-JUSTIFIED"]),
 
-        // §7 #7, §4 steps 4b and 5: after an interior pick ACE returns before the visibility filter, so land cells and
-        // cells the position does not see stay candidates of a static query.
-        new("ace-early-return", "§7 #7, §4 step 5: an interior pick returns before the visibility filter", ["VISIBILITY"]),
-
         // §7 #10, §5.1: a portal neighbour missing from the cell's VisibleCells is not resolved but added as a load hint,
         // a null entry under the id of a loaded cell the position does not see, and the filter keeps null entries.
         new("ace-neighbour-via-visible-cells", "§7 #10, §5.1: a neighbour the cell does not see is added as a load hint", ["VISIBILITY"]),
-
-        // §7 #11, §5.1: a load hint is keyed by the bare 16-bit id: not the full id of a portal target, not moved with
-        // the scene, not the id the position's portal names.
-        new("ace-load-hint-low-key", "§7 #11, §5.1: load hints carry the 16-bit id, not the full id", ["PORTAL-TRANSIT", "SCENE-TRANSLATION", "SCENE-SOUNDNESS"]),
     ];
 
     /// <summary>Gets every (switch, invariant) pair the table exempts, in table order.</summary>
