@@ -15,6 +15,7 @@ public sealed class NarrowedUnderDeviationTests
     public static TheoryData<string, string, PickPolicy> Narrowed => new()
     {
         { "ace-early-return", "VISIBILITY", PickPolicy.Retail }, // steps after an interior pick skip the filter (facts §7 #7)
+        { "ace-neighbour-via-visible-cells", "VISIBILITY", PickPolicy.Retail }, // an unseen portal neighbour is a hint (§7 #10)
         { "ace-load-hint-low-key", "PORTAL-TRANSIT", PickPolicy.Retail }, // the hint is looked for under its 16-bit key (§7 #11)
         { "ace-load-hint-low-key", "SCENE-SOUNDNESS", PickPolicy.Retail },
         { "ace-load-hint-low-key", "SCENE-TRANSLATION", PickPolicy.Retail },

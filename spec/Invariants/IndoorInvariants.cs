@@ -220,9 +220,10 @@ public static class IndoorInvariants
                 }
 
                 applied = true;
-                foreach (var id in s.Cells)
+                for (int k = 0; k < s.Cells.Count; k++)
                 {
-                    if (id != cell.Id && !cell.Visible.Contains(id) && SceneOracle.IsLoaded(w.Scene, id))
+                    var id = s.Cells[k];
+                    if (id != cell.Id && !cell.Visible.Contains(id) && SceneOracle.IsLoaded(w.Scene, id) && !AceBlindHint(impl, w.Scene, s, k))
                     {
                         return Outcome.ViolatedAt(s.Index, $"step {s.Index}: from {cell.Id}, candidate {id} is loaded but not in its VisibleCells [{string.Join(", ", cell.Visible)}]");
                     }
@@ -410,6 +411,21 @@ public static class IndoorInvariants
         [InteriorWins, HysteresisIndoor, PortalTransit, NoTunnel, Visibility, EnterExit, SceneTranslation, ContainingContains, NeverNull, SceneSoundness];
 
     private static Vector3 Center(WalkStep s) => s.Query.Spheres[0].Center;
+
+    // Under a declared ace-neighbour-via-visible-cells a portal neighbour missing from the walked cell's VisibleCells is
+    // not resolved but added as a load hint under its id (facts §7 #10, §5.1), and the filter keeps hints (§4 step 5):
+    // a candidate some loaded env cell of the block leads to by a portal without seeing it, not reported as loaded.
+    private static bool AceBlindHint(ICellPhysics impl, Scene scene, WalkStep s, int k)
+    {
+        var id = s.Cells[k];
+        if (!impl.Indoor.AceNeighbourViaVisibleCells || s.Answer?.Loaded is { } loaded && k < loaded.Count && loaded[k])
+        {
+            return false;
+        }
+
+        return scene.Cells.Any(c => c.Id.Landblock == id.Landblock && SceneOracle.IsLoadedEnv(scene, c.Id) && !c.Visible.Contains(id)
+            && c.Portals.Any(p => !p.IsExit && c.Id.WithLow(p.Other) == id));
+    }
 
     // lowKey: a declared ace-load-hint-low-key, under which a load hint carries the portal's bare 16-bit id (facts §7 #11).
     private static string? Unreachable(Scene scene, WalkStep s, bool lowKey)

@@ -16,7 +16,8 @@ namespace AcPhys.Spec.Judging;
 /// One row per switch, measured on the unfaulted reference (<c>acphys verify --cases 1000 --fidelity SWITCH</c>, pr base
 /// seed; docs/facts-coverage.md, "No false alarm from the reference") and each row's invariants checked against the ACE
 /// difference it names in facts §7 (and §4 or §5, where the step is described). Where an oracle can honour a switch
-/// it judges under it instead: ace-early-return (VISIBILITY skips the steps after an interior pick), ace-load-hint-low-key
+/// it judges under it instead: ace-early-return (VISIBILITY skips the steps after an interior pick),
+/// ace-neighbour-via-visible-cells (VISIBILITY lets a portal neighbour the walked cell does not see be ACE's hint), ace-load-hint-low-key
 /// (PORTAL-TRANSIT, SCENE-SOUNDNESS and SCENE-TRANSLATION read a hint under its 16-bit key) and ace-no-portal-guard
 /// (<see cref="SceneOracle.Pickable"/>, HYSTERESIS-INDOOR); those switches, and the ones that break nothing measured
 /// (ace-filter-outside-guard, ace-outside-by-cell-id, drop-unloaded-land-cells, ace-transition-filter, reframe-transit,
@@ -30,10 +31,6 @@ public static class BrokenByDesign
         // reach, unseen from the position, picked as the containing cell, again after the scene moved by a block), and
         // a cell already held is not appended again where retail's walk would reach it.
         new("ace-keeps-stale-cells", "§7 #6, §4 step 1: the array is not cleared between calls", ["PORTAL-TRANSIT", "NO-TUNNEL", "VISIBILITY", "SCENE-TRANSLATION", "NEVER-NULL", "SCENE-SOUNDNESS", "ENV-CANDIDATE-JUSTIFIED"]),
-
-        // §7 #10, §5.1: a portal neighbour missing from the cell's VisibleCells is not resolved but added as a load hint,
-        // a null entry under the id of a loaded cell the position does not see, and the filter keeps null entries.
-        new("ace-neighbour-via-visible-cells", "§7 #10, §5.1: a neighbour the cell does not see is added as a load hint", ["VISIBILITY"]),
     ];
 
     /// <summary>Gets every (switch, invariant) pair the table exempts, in table order.</summary>
