@@ -36,7 +36,7 @@ public static class IndoorClosureInvariants
         "facts §4 step 4a, §5.1, §5.3, §5.7",
         Op.None,
         SceneDomain.Instance,
-        (impl, w) => impl.Indoor.AceKeepsStaleCells ? Outcome.Vacuous : ExactSteps.EachStep(impl, w, (scene, s) => Justified(impl, scene, s)), sceneForms: SceneQueryKinds.Either);
+        (impl, w) => ExactSteps.EachStep(impl, w, (scene, s) => Justified(impl, scene, s)), sceneForms: SceneQueryKinds.Either);
 
     /// <summary>Gets the closure invariants.</summary>
     public static IReadOnlyList<Invariant<SceneWalk>> All { get; } = [NeighboursComplete, BuildingEntryComplete, EnvCandidateJustified];

@@ -59,12 +59,13 @@ public static class IndoorInvariants
                 var s = trace[i];
                 var prev = trace[i - 1].Current;
                 var c = Center(s);
-                if (prev.IsNone || !s.Cells.Contains(prev) || !SceneOracle.IsLoaded(w.Scene, prev) || !SceneQuery.Contains(built, s.Query.Cell, prev, c, default))
+                if (prev.IsNone || !s.Cells.Contains(prev) || !SceneOracle.IsLoaded(w.Scene, prev) || !SceneQuery.Contains(built, s.Query.Cell, prev, c, impl.Indoor))
                 {
                     continue;
                 }
 
-                if (prev.IsLand && s.Cells.Any(id => id.IsEnv && SceneOracle.IsLoadedEnv(w.Scene, id) && SceneQuery.Contains(built, s.Query.Cell, id, c, default)))
+                // A cell without portals contains nothing under retail's point_in_cell, but does under a declared ace-no-portal-guard (facts §5.5, §7 #13).
+                if (prev.IsLand && s.Cells.Any(id => id.IsEnv && SceneOracle.IsLoadedEnv(w.Scene, id) && SceneQuery.Contains(built, s.Query.Cell, id, c, impl.Indoor)))
                 {
                     continue;
                 }
@@ -83,8 +84,8 @@ public static class IndoorInvariants
     /// <summary>PORTAL-TRANSIT.</summary>
     public static readonly Invariant<SceneWalk> PortalTransit = new(
         "PORTAL-TRANSIT",
-        "With steps no longer than the radius: a centre inside a loaded env cell by 1 mm on two steps running is in that cell after the second (no absorbing outdoor state), except while the position is a land cell framed in another block than the cell (facts §6.11: retail does not re-frame the building test) or the cell is not directly behind a valid building portal whose building's land cell is a candidate (facts §5.3: a building is reached only through the land cell it is attached to); a centre clear of every cell on two steps running over loaded land, queried from a loaded cell, is in a land cell (no absorbing indoor state); neither clause applies while the client still holds a cell it lost for a reason NEVER-NULL excuses; and a load hint for an unloaded cell behind the position's portal appears exactly when a sphere reaches past r + EPS toward it.",
-        "facts §5.1, §5.3, §5.4, §6.9, §6.11",
+        "With steps no longer than the radius: a centre inside a loaded env cell by 1 mm on two steps running is in that cell after the second (no absorbing outdoor state), except while the position is a land cell framed in another block than the cell (facts §6.11: retail does not re-frame the building test) or the cell is not directly behind a valid building portal whose building's land cell is a candidate (facts §5.3: a building is reached only through the land cell it is attached to); a centre clear of every cell on two steps running over loaded land, queried from a loaded cell, is in a land cell (no absorbing indoor state); neither clause applies while the client still holds a cell it lost for a reason NEVER-NULL excuses; and a load hint for an unloaded cell behind the position's portal appears when a sphere reaches past r + EPS toward it, and is absent when no sphere reaches that portal nor a portal of another loaded cell to the same cell (the transit closure walks those too).",
+        "facts §4 step 4a, §5.1, §5.3, §5.4, §6.9, §6.11",
         Op.None,
         SceneDomain.Instance,
         (impl, w) =>
@@ -101,7 +102,7 @@ public static class IndoorInvariants
             {
                 var s = trace[i];
                 var c = Center(s);
-                if (LoadHintMismatch(w, s) is string hint)
+                if (LoadHintMismatch(w, s, impl.Indoor) is string hint)
                 {
                     return Outcome.ViolatedAt(s.Index, $"step {s.Index}: {hint}");
                 }
@@ -213,10 +214,16 @@ public static class IndoorInvariants
                     continue;
                 }
 
-                applied = true;
-                foreach (var id in s.Cells)
+                if (impl.Indoor.AceEarlyReturn && s.Containing.IsEnv)
                 {
-                    if (id != cell.Id && !cell.Visible.Contains(id) && SceneOracle.IsLoaded(w.Scene, id))
+                    continue; // a declared ace-early-return: after an interior pick ACE returns before the filter (facts §7 #7)
+                }
+
+                applied = true;
+                for (int k = 0; k < s.Cells.Count; k++)
+                {
+                    var id = s.Cells[k];
+                    if (id != cell.Id && !cell.Visible.Contains(id) && SceneOracle.IsLoaded(w.Scene, id) && !AceBlindHint(impl, w.Scene, s, k))
                     {
                         return Outcome.ViolatedAt(s.Index, $"step {s.Index}: from {cell.Id}, candidate {id} is loaded but not in its VisibleCells [{string.Join(", ", cell.Visible)}]");
                     }
@@ -280,6 +287,15 @@ public static class IndoorInvariants
                 return Outcome.Vacuous;
             }
 
+            // A declared ace-load-hint-low-key keys hints by the bare 16-bit id, which no move changes (facts §7 #11); in a
+            // scene holding block 0x0000 such a key cannot be told from a cell id, so the case is not judged.
+            bool lowKey = impl.Indoor.AceLoadHintLowKey;
+            if (lowKey && blocks.Any(b => b.X == 0 && b.Y == 0))
+            {
+                return Outcome.Vacuous;
+            }
+
+            CellId Moved(CellId id) => lowKey && id.IsEnv && id.BlockX == 0 && id.BlockY == 0 ? id : Move(id, dx, dy);
             var moved = new SceneWalk(w.Scene.Translated(dx, dy), w.Walk with { StartCell = Move(w.Walk.StartCell, dx, dy) });
             var a = SceneWalkRunner.Run(impl, w);
             var b = SceneWalkRunner.Run(impl, moved);
@@ -291,7 +307,7 @@ public static class IndoorInvariants
                     return Outcome.Vacuous;
                 }
 
-                var expected = x.Cells.Select(id => Move(id, dx, dy)).ToList();
+                var expected = x.Cells.Select(Moved).ToList();
                 if (!expected.SequenceEqual(y.Cells) || Move(x.Containing, dx, dy) != y.Containing)
                 {
                     return Outcome.ViolatedAt(x.Index, $"step {x.Index}: moved by ({dx}, {dy}) blocks the answer is [{string.Join(", ", y.Cells)}] → {y.Containing}, expected [{string.Join(", ", expected)}] → {Move(x.Containing, dx, dy)}");
@@ -380,7 +396,7 @@ public static class IndoorInvariants
         {
             foreach (var s in SceneWalkRunner.Run(impl, w))
             {
-                if (Unreachable(w.Scene, s) is string why)
+                if (Unreachable(w.Scene, s, impl.Indoor.AceLoadHintLowKey) is string why)
                 {
                     return Outcome.ViolatedAt(s.Index, $"step {s.Index}: {why}");
                 }
@@ -396,7 +412,23 @@ public static class IndoorInvariants
 
     private static Vector3 Center(WalkStep s) => s.Query.Spheres[0].Center;
 
-    private static string? Unreachable(Scene scene, WalkStep s)
+    // Under a declared ace-neighbour-via-visible-cells a portal neighbour missing from the walked cell's VisibleCells is
+    // not resolved but added as a load hint under its id (facts §7 #10, §5.1), and the filter keeps hints (§4 step 5):
+    // a candidate some loaded env cell of the block leads to by a portal without seeing it, not reported as loaded.
+    private static bool AceBlindHint(ICellPhysics impl, Scene scene, WalkStep s, int k)
+    {
+        var id = s.Cells[k];
+        if (!impl.Indoor.AceNeighbourViaVisibleCells || s.Answer?.Loaded is { } loaded && k < loaded.Count && loaded[k])
+        {
+            return false;
+        }
+
+        return scene.Cells.Any(c => c.Id.Landblock == id.Landblock && SceneOracle.IsLoadedEnv(scene, c.Id) && !c.Visible.Contains(id)
+            && c.Portals.Any(p => !p.IsExit && c.Id.WithLow(p.Other) == id));
+    }
+
+    // lowKey: a declared ace-load-hint-low-key, under which a load hint carries the portal's bare 16-bit id (facts §7 #11).
+    private static string? Unreachable(Scene scene, WalkStep s, bool lowKey)
     {
         if (s.Cells.Distinct().Count() != s.Cells.Count)
         {
@@ -420,7 +452,7 @@ public static class IndoorInvariants
             }
             else
             {
-                near = id == s.Query.Cell || s.Cells.Any(c => SceneOracle.Cell(scene, c) is { } owner && owner.Portals.Any(p => !p.IsExit && owner.Id.WithLow(p.Other) == id));
+                near = id == s.Query.Cell || s.Cells.Any(c => SceneOracle.Cell(scene, c) is { } owner && owner.Portals.Any(p => !p.IsExit && (owner.Id.WithLow(p.Other) == id || (lowKey && new CellId(p.Other) == id))));
             }
 
             if (!near)
@@ -593,9 +625,17 @@ public static class IndoorInvariants
     private static IEnumerable<CellId> Neighbourhood(Scene scene, CellId a) =>
         scene.Cells.Where(c => c.Id == a || PortalLinked(scene, a, c.Id)).Select(c => c.Id).Append(a).Distinct();
 
-    // The position's own portals into unloaded cells: a hint iff some sphere reaches past r + EPS toward the other side,
-    // the side read from the geometry (the cell's box centre), not from PortalSide.
-    private static string? LoadHintMismatch(SceneWalk w, WalkStep s)
+    // The position's own portals into unloaded cells, the side read from the geometry (the cell's box centre), not from
+    // PortalSide. A sphere reaching past one by r + EPS gives the hint: the position is walked first (facts §4 step 3,
+    // §5.1). A hint given while no sphere reaches it is wrong only if no other cell the closure may walk gives it either:
+    // the transit closure walks every cell it adds, and any of them with a portal to the same unloaded cell adds the
+    // same hint when a sphere reaches that portal's infinite plane (facts §4 step 4a, §5.1). Which cells were walked is
+    // over-approximated by the loaded env cells of the block within r + 0.01 + 1 mm of a sphere (a neighbour or a
+    // building's cell is added only when the BSP sphere test, padded 0.01, takes it in: §5.1, §5.3, §5.7; the filter
+    // may drop a walked cell after its hint was added, and never drops a hint, §4 step 5), so this direction never
+    // accuses a hint retail gives.
+    // Under a declared ace-load-hint-low-key the hint is looked for under ACE's key, the bare 16-bit id (facts §7 #11).
+    private static string? LoadHintMismatch(SceneWalk w, WalkStep s, IndoorFidelity fidelity)
     {
         var cell = SceneOracle.Cell(w.Scene, s.Query.Cell);
         if (cell is null || !SceneOracle.IsLoadedEnv(w.Scene, cell.Id))
@@ -611,23 +651,45 @@ public static class IndoorInvariants
                 continue;
             }
 
-            bool reaches = false, tie = false;
-            foreach (var sphere in s.Query.Spheres)
+            var (reaches, tie) = Reach(outward, s);
+            bool given = s.Cells.Contains(fidelity.AceLoadHintLowKey ? new CellId(other.Low) : other);
+            if (tie || reaches == given)
             {
-                double slack = outward.Past(sphere.Center) + sphere.Radius + LandDefs.Epsilon;
-                tie |= Math.Abs(slack) < Margin;
-                reaches |= slack > 0;
+                continue;
             }
 
-            if (!tie && reaches != s.Cells.Contains(other))
+            if (reaches)
             {
-                return reaches
-                    ? $"a sphere reaches past the portal of {cell.Id} toward unloaded {other} but no load hint was given"
-                    : $"load hint {other} given although every sphere is wholly on {cell.Id}'s side of the portal";
+                return $"a sphere reaches past the portal of {cell.Id} toward unloaded {other} but no load hint was given";
+            }
+
+            if (!HintedElsewhere(w.Scene, cell, other, s))
+            {
+                return $"load hint {other} given although every sphere is wholly on {cell.Id}'s side of the portal, and no other loaded cell's portal to it is reached";
             }
         }
 
         return null;
+    }
+
+    // Whether another loaded env cell the closure may have walked has a portal to the unloaded cell whose plane a sphere reaches (or ties).
+    private static bool HintedElsewhere(Scene scene, SceneCell own, CellId other, WalkStep s) =>
+        scene.Cells.Where(c => c.Id != own.Id && c.Id.Landblock == other.Landblock && SceneOracle.IsLoadedEnv(scene, c.Id)
+                && s.Query.Spheres.Any(sp => SceneOracle.Depth(c, s.Query.Cell, sp.Center) >= -(sp.Radius + 0.01 + Margin)))
+            .Any(c => Outward(c).Any(o => !o.Portal.IsExit && c.Id.WithLow(o.Portal.Other) == other && Reach(o, s) is (true, _) or (_, true)));
+
+    // Whether a sphere reaches past a portal's plane by r + EPS, and whether one is within 1 mm of that (a tie).
+    private static (bool Reaches, bool Tie) Reach(OutwardPortal outward, WalkStep s)
+    {
+        bool reaches = false, tie = false;
+        foreach (var sphere in s.Query.Spheres)
+        {
+            double slack = outward.Past(sphere.Center) + sphere.Radius + LandDefs.Epsilon;
+            tie |= Math.Abs(slack) < Margin;
+            reaches |= slack > 0;
+        }
+
+        return (reaches, tie);
     }
 
     // A cell's portals with their planes normalised and the cell's own side read from the geometry (piece 0's box

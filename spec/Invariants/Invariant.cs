@@ -1,6 +1,7 @@
 using AcPhys.Core;
 using AcPhys.Spec.Adapters;
 using AcPhys.Spec.Cases;
+using AcPhys.Spec.Judging;
 using AcPhys.Spec.Running;
 
 namespace AcPhys.Spec.Invariants;
@@ -61,10 +62,14 @@ public abstract class Invariant
     /// <returns>True when it can be tested.</returns>
     public bool IsTestable(ICellPhysics impl) => WhyNotTestable(impl) is null;
 
-    /// <summary>Says why an implementation cannot be tested against this invariant, or null when it can.</summary>
+    /// <summary>
+    /// Says why an implementation cannot be tested against this invariant, or null when it can: an operation or the
+    /// pick it lacks, or a deviation it declares that breaks this statement by design (<see cref="BrokenByDesign"/>).
+    /// </summary>
     /// <param name="impl">The implementation.</param>
     /// <returns>The reason, or null.</returns>
-    public string? WhyNotTestable(ICellPhysics impl) => WhyNotTestable(impl.Ops, impl.Pick);
+    public string? WhyNotTestable(ICellPhysics impl) =>
+        WhyNotTestable(impl.Ops, impl.Pick) ?? BrokenByDesign.WhyNotJudged(Id, impl.Indoor, impl.Outdoor);
 
     /// <summary>Says why an implementation offering these operations and declaring this pick cannot be tested, or null when it can.</summary>
     /// <param name="ops">The operations it offers.</param>

@@ -36,7 +36,7 @@ public static class InvariantScope
         ["PARTS-SOUNDNESS"] = (Scope.Retail, "facts §3.4, §5.9"),
         ["INTERIOR-WINS"] = (Scope.Retail, "facts §4 step 4b"),
         ["HYSTERESIS-INDOOR"] = (Scope.Hardening, "acdream's current-cell-first pick in scenes, not retail's pick (facts §4 step 4b): at most one switch per real crossing"),
-        ["PORTAL-TRANSIT"] = (Scope.Retail, "facts §5.1, §5.3, §5.4, §6.9, §6.11"),
+        ["PORTAL-TRANSIT"] = (Scope.Retail, "facts §4 step 4a, §5.1, §5.3, §5.4, §6.9, §6.11"),
         ["NO-TUNNEL"] = (Scope.Retail, "facts §3.2, §5.1, §5.3"),
         ["VISIBILITY"] = (Scope.Retail, "facts §4 step 5, §6.14"),
         ["ENTER-EXIT"] = (Scope.Retail, "facts §4"),
