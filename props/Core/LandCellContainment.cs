@@ -67,6 +67,18 @@ public sealed class LandCellContainment
                 .Classify(!contained, "outside");
         });
 
+    [Theory(DisplayName = "facts §6.17: a non-finite point is in no terrain triangle (the reference's hardening; retail's crosses would be NaN)")]
+    [InlineData(float.NaN, 12f)]
+    [InlineData(12f, float.NaN)]
+    [InlineData(float.PositiveInfinity, 12f)]
+    [InlineData(12f, float.NegativeInfinity)]
+    public void NonFinitePointIsInNoTriangle(float x, float y)
+    {
+        var cell = FirstCell(cut: true, cx: 0, cy: 0);
+        Assert.False(TerrainTriangles.Contains(cell, new Vector3(x, y, 0.5f)));
+        Assert.True(TerrainTriangles.Contains(cell, new Vector3(12f, 12f, 0.5f))); // the same cell holds its centre
+    }
+
     [Fact(DisplayName = "facts §5.5: a corner sliver exists — 1e-7 m west of a south-west corner the SW–NE triangle accepts the point")]
     public void TheSliverAtASouthWestCorner()
     {

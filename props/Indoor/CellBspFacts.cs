@@ -36,6 +36,21 @@ public sealed class CellBspFacts
         Assert.True(Cube.BoxIntersects(new Box(new Vector3(-2, 0, 0), new Vector3(-0.0001f, 1, 1)))); // the far corners are Close
     }
 
+    [Theory(DisplayName = "facts §5.7: a box wholly outside any one face of a cube does not intersect it; moved a tenth as far, it does")]
+    [InlineData(-3f, 0f, 0f)]
+    [InlineData(3f, 0f, 0f)]
+    [InlineData(0f, -3f, 0f)]
+    [InlineData(0f, 3f, 0f)]
+    [InlineData(0f, 0f, -3f)]
+    [InlineData(0f, 0f, 3f)]
+    public void BoxOutsideEachFace(float dx, float dy, float dz)
+    {
+        // The unit box moved three widths along one axis: outside exactly one face, level with the cube on the others.
+        var shift = new Vector3(dx, dy, dz);
+        Assert.False(Cube.BoxIntersects(new Box(shift, Vector3.One + shift)));
+        Assert.True(Cube.BoxIntersects(new Box(shift * 0.1f, Vector3.One + (shift * 0.1f))));
+    }
+
     [Fact(DisplayName = "Unions: retail's positive chain answers for the first piece only; the AABB over-covers the union's box")]
     public void LShapeUnion()
     {
