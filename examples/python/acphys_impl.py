@@ -260,9 +260,16 @@ def cuts_sw_to_ne(gx, gy):
 
 
 def rejects(prev, cur, px, py):
-    """point_in_poly2D's edge test, side Positive (facts §5.5): the float32 cross (cur - prev) x (p - cur) > 0."""
-    ax, ay = f32(cur[0] - prev[0]), f32(cur[1] - prev[1])
+    """point_in_poly2D's edge test, side Positive (facts §5.5): the float32 cross (cur - prev) x (p - cur) > 0.
+
+    The edge's components are differences of cell corners, 0 or +-24 m: exact in float32, so they are not rounded, and
+    a zero component's product is an exact zero, so an axis-aligned edge's cross is its one rounded product."""
+    ax, ay = cur[0] - prev[0], cur[1] - prev[1]
     bx, by = f32(px - cur[0]), f32(py - cur[1])
+    if ax == 0.0:
+        return -f32(ay * bx) > 0.0
+    if ay == 0.0:
+        return f32(ax * by) > 0.0
     return f32(f32(ax * by) - f32(ay * bx)) > 0.0
 
 
