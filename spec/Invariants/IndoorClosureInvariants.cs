@@ -156,7 +156,7 @@ public static class IndoorClosureInvariants
 
             // The static filter may have removed the cell that led here: then any loaded cell or reachable land cell may have.
             bool viaPortal = ran && (filtered ? scene.Envs : walkedEnv.Select(e => scene.Env(e)!))
-                .Any(e => e.Source.Id != id && e.Source.Portals.Any(p => !p.IsExit && e.Source.Id.WithLow(p.Other) == id));
+                .Any(e => e.Source.Id != id && SceneOracle.LeadsTo(e.Source, id));
             bool viaBuilding = ran && scene.Attached.Any(kv => kv.Key.Landblock == id.Landblock
                 && kv.Value.Portals.Any(p => p.Portal != BldPortal.None && kv.Key.WithLow(p.Cell) == id)
                 && (filtered ? scene.IsLoadedLand(kv.Key) && Reaches(s, kv.Key) : walkedLand.Contains(kv.Key)));

@@ -424,7 +424,7 @@ public static class IndoorInvariants
         }
 
         return scene.Cells.Any(c => c.Id.Landblock == id.Landblock && SceneOracle.IsLoadedEnv(scene, c.Id) && !c.Visible.Contains(id)
-            && c.Portals.Any(p => !p.IsExit && c.Id.WithLow(p.Other) == id));
+            && SceneOracle.LeadsTo(c, id));
     }
 
     // lowKey: a declared ace-load-hint-low-key, under which a load hint carries the portal's bare 16-bit id (facts §7 #11).
@@ -452,7 +452,7 @@ public static class IndoorInvariants
             }
             else
             {
-                near = id == s.Query.Cell || s.Cells.Any(c => SceneOracle.Cell(scene, c) is { } owner && owner.Portals.Any(p => !p.IsExit && (owner.Id.WithLow(p.Other) == id || (lowKey && new CellId(p.Other) == id))));
+                near = id == s.Query.Cell || s.Cells.Any(c => SceneOracle.Cell(scene, c) is { } owner && (SceneOracle.LeadsTo(owner, id) || (lowKey && owner.Portals.Any(p => !p.IsExit && new CellId(p.Other) == id))));
             }
 
             if (!near)

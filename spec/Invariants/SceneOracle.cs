@@ -60,6 +60,12 @@ public static class SceneOracle
     /// <returns>True when the cell's volume decides.</returns>
     public static bool Pickable(SceneCell cell, IndoorFidelity fidelity) => cell.Portals.Count > 0 || fidelity.AceNoPortalGuard;
 
+    /// <summary>Whether a cell has a portal (not an exit) to another env cell of its block (facts §5.1, §5.4).</summary>
+    /// <param name="cell">The cell.</param>
+    /// <param name="id">The other cell.</param>
+    /// <returns>True when one of its portals leads there.</returns>
+    public static bool LeadsTo(SceneCell cell, CellId id) => cell.Portals.Any(p => !p.IsExit && cell.Id.WithLow(p.Other) == id);
+
     /// <summary>Returns the declared cell of an id, or null.</summary>
     /// <param name="scene">The scene.</param>
     /// <param name="id">An id.</param>
