@@ -24,6 +24,7 @@ public sealed class BoundedLineReader
     private int end;
     private bool skipping;
     private bool started;
+    private bool resuming;
 
     /// <summary>Initializes a new instance.</summary>
     /// <param name="stream">The peer's output (read, never closed here).</param>
@@ -49,7 +50,23 @@ public sealed class BoundedLineReader
     /// sched_yield storm per request, issue 26).</remarks>
     public string? ReadLine()
     {
-        var pending = Read(synchronous: true);
+        var pending = Read(synchronous: true, null);
+        Debug.Assert(pending.IsCompleted, "a synchronous read completes before it returns");
+        return pending.GetAwaiter().GetResult();
+    }
+
+    /// <summary>Reads the next line synchronously, calling <paramref name="waitForInput"/> before each read of the stream that could block.</summary>
+    /// <param name="waitForInput">Waits until the stream has input (or its end, or an error) so the read returns at once;
+    /// false when it gave up (the peer is too slow).</param>
+    /// <returns>The line without its end, or null at end of input.</returns>
+    /// <exception cref="LineTooLongException">The line is longer than <see cref="MaxBytes"/>; the next call reads the line after it.</exception>
+    /// <exception cref="TimeoutException"><paramref name="waitForInput"/> gave up; what was read of the line so far is kept.</exception>
+    /// <remarks>How the tool reads a child's answers (issue 26): the calling thread waits and reads, where
+    /// <see cref="ReadLineAsync"/> cost a pool thread's hand-off and a spin-wait per answer.</remarks>
+    public string? ReadLine(Func<bool> waitForInput)
+    {
+        ArgumentNullException.ThrowIfNull(waitForInput);
+        var pending = Read(synchronous: true, waitForInput);
         Debug.Assert(pending.IsCompleted, "a synchronous read completes before it returns");
         return pending.GetAwaiter().GetResult();
     }
@@ -57,19 +74,24 @@ public sealed class BoundedLineReader
     /// <summary>Reads the next line without holding a thread while the peer is silent (the ProcessAdapter waits on it with a timeout).</summary>
     /// <returns>The line without its end, or null at end of input.</returns>
     /// <exception cref="LineTooLongException">The line is longer than <see cref="MaxBytes"/>; the next call reads the line after it.</exception>
-    public ValueTask<string?> ReadLineAsync() => Read(synchronous: false);
+    public ValueTask<string?> ReadLineAsync() => Read(synchronous: false, null);
 
-    private async ValueTask<string?> Read(bool synchronous)
+    private async ValueTask<string?> Read(bool synchronous, Func<bool>? waitForInput)
     {
-        if (skipping && !await SkipRestAsync(synchronous).ConfigureAwait(false))
+        if (skipping && !await SkipRestAsync(synchronous, waitForInput).ConfigureAwait(false))
         {
             return null;
         }
 
-        line.SetLength(0);
+        if (!resuming)
+        {
+            line.SetLength(0);
+        }
+
+        resuming = false;
         while (true)
         {
-            if (start == end && !await FillAsync(synchronous).ConfigureAwait(false))
+            if (start == end && !await FillAsync(synchronous, waitForInput).ConfigureAwait(false))
             {
                 return line.Length == 0 ? null : Text();
             }
@@ -112,8 +134,14 @@ public sealed class BoundedLineReader
         return Encoding.UTF8.GetString(bytes);
     }
 
-    private async ValueTask<bool> FillAsync(bool synchronous)
+    private async ValueTask<bool> FillAsync(bool synchronous, Func<bool>? waitForInput)
     {
+        if (waitForInput is not null && !waitForInput())
+        {
+            resuming = !skipping; // the next call goes on with the line held so far
+            throw new TimeoutException("no input within the wait");
+        }
+
         start = 0;
         end = synchronous
             ? stream.Read(buffer, 0, buffer.Length)
@@ -127,15 +155,15 @@ public sealed class BoundedLineReader
             }
         }
 
-        return end > start || (end > 0 && await FillAsync(synchronous).ConfigureAwait(false));
+        return end > start || (end > 0 && await FillAsync(synchronous, waitForInput).ConfigureAwait(false));
     }
 
     // Skips to just after the next newline; false at end of input.
-    private async ValueTask<bool> SkipRestAsync(bool synchronous)
+    private async ValueTask<bool> SkipRestAsync(bool synchronous, Func<bool>? waitForInput)
     {
         while (true)
         {
-            if (start == end && !await FillAsync(synchronous).ConfigureAwait(false))
+            if (start == end && !await FillAsync(synchronous, waitForInput).ConfigureAwait(false))
             {
                 skipping = false;
                 return false;

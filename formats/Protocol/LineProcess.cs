@@ -40,6 +40,12 @@ internal sealed class LineProcess : IDisposable
     private int group;
     private string tag = string.Empty;
     private string? stdoutPipe;
+    private Stream? stdin;
+    private byte[] queued = new byte[64 * 1024];
+    private int queuedBytes;
+    private int stdoutFd = -1;
+    private long deadline;
+    private Func<bool>? waitForAnswer;
 
     private LineProcess(Process process, string commandLine, Action<string>? stderrSink)
     {
@@ -99,10 +105,17 @@ internal sealed class LineProcess : IDisposable
 
         process.BeginErrorReadLine();
         process.StandardInput.AutoFlush = true;
+        child.stdin = process.StandardInput.BaseStream; // requests are written as bytes (Queue, Flush); the writer stays empty
         child.answers = new BoundedLineReader(process.StandardOutput.BaseStream, maxLineBytes);
         if (process.StandardOutput.BaseStream is System.IO.Pipes.PipeStream pipe)
         {
-            child.stdoutPipe = ImplProcesses.NameOf(pipe.SafePipeHandle.DangerousGetHandle().ToInt32());
+            int fd = pipe.SafePipeHandle.DangerousGetHandle().ToInt32();
+            child.stdoutPipe = ImplProcesses.NameOf(fd);
+            if (!OperatingSystem.IsWindows())
+            {
+                child.stdoutFd = fd;
+                child.waitForAnswer = child.WaitForAnswer;
+            }
         }
 
         return child;
@@ -129,18 +142,72 @@ internal sealed class LineProcess : IDisposable
     /// <exception cref="AdapterFailureException">The child failed earlier or its stdin is closed.</exception>
     public void Send(string request, string what)
     {
+        Queue(request, what);
+        Flush(what);
+    }
+
+    /// <summary>Gets how many bytes of queued requests are not yet written to the child.</summary>
+    public int QueuedBytes => queuedBytes;
+
+    /// <summary>Queues one request line; it reaches the child at the next <see cref="Flush"/> (the same thread sends).</summary>
+    /// <param name="request">The request line.</param>
+    /// <param name="what">What the request is, for messages (the op name).</param>
+    /// <exception cref="AdapterFailureException">The child failed earlier.</exception>
+    /// <remarks>Issue 26: one write (and one wake-up of the child) per request was most of a served gate's kernel time;
+    /// a pipelined run queues its requests and writes them in batches, and flushes before anything waits for an answer.
+    /// The bytes are what the standard-input writer sent (UTF-8 without a byte order mark, lone surrogates as U+FFFD,
+    /// the platform's line end).</remarks>
+    public void Queue(string request, string what)
+    {
         if (dead)
         {
             throw new AdapterFailureException($"'{commandLine}' is no longer running (it failed earlier)");
         }
 
+        string end = Environment.NewLine;
+        int most = Encoding.UTF8.GetMaxByteCount(request.Length + end.Length);
+        if (queued.Length - queuedBytes < most)
+        {
+            int need = Encoding.UTF8.GetByteCount(request) + Encoding.UTF8.GetByteCount(end);
+            if (queued.Length - queuedBytes < need)
+            {
+                Array.Resize(ref queued, Math.Max(queued.Length * 2, queuedBytes + need));
+            }
+        }
+
+        queuedBytes += Encoding.UTF8.GetBytes(request, queued.AsSpan(queuedBytes));
+        queuedBytes += Encoding.UTF8.GetBytes(end, queued.AsSpan(queuedBytes));
+    }
+
+    /// <summary>Writes every queued request to the child.</summary>
+    /// <param name="what">What the last request is, for messages (the op name).</param>
+    /// <exception cref="AdapterFailureException">The child's stdin is closed.</exception>
+    public void Flush(string what)
+    {
+        if (queuedBytes == 0)
+        {
+            return;
+        }
+
+        int count = queuedBytes;
+        queuedBytes = 0; // written or lost with the child: never written twice
         try
         {
-            process.StandardInput.WriteLine(request);
+            stdin!.Write(queued, 0, count);
+            stdin.Flush();
         }
         catch (IOException e)
         {
             throw Died($"could not send '{what}' (the pipe is closed)", e);
+        }
+        catch (ObjectDisposedException e)
+        {
+            throw Died($"could not send '{what}' (the pipe is closed)", e);
+        }
+
+        if (queued.Length > 1 << 20)
+        {
+            queued = new byte[64 * 1024]; // one huge request does not keep its buffer for the rest of the run
         }
     }
 
@@ -178,6 +245,11 @@ internal sealed class LineProcess : IDisposable
         }
 
         var reader = answers!;
+        if (waitForAnswer is not null)
+        {
+            return ReceiveSynchronously(reader, what, request, timeout, wait);
+        }
+
         pending ??= reader.ReadLineAsync().AsTask(); // asynchronous: no pool thread blocks while the child thinks
         bool answered;
         try
@@ -197,23 +269,76 @@ internal sealed class LineProcess : IDisposable
 
         if (!answered)
         {
-            dead = true;
-            if (stdoutPipe is not null && ImplProcesses.ClosedStdout(tag, stdoutPipe, commandLine))
-            {
-                // Alive, but nothing of it can answer any more (issue 28: this was reported as a slow answer).
-                Kill();
-                throw new AdapterFailureException(
-                    string.Create(CultureInfo.InvariantCulture, $"'{commandLine}' closed its stdout but is still running, so it cannot answer '{what}'; it was killed after {timeout.TotalSeconds:0.###} s (--timeout){TailText()}"));
-            }
-
-            Kill();
-            throw new AdapterFailureException(
-                string.Create(CultureInfo.InvariantCulture, $"'{commandLine}' did not answer '{what}' within {timeout.TotalSeconds:0.###} s (--timeout); it was killed. Request: {Wire.Brief(request, 200)}{TailText()}"));
+            throw TimedOut(what, request, timeout);
         }
 
         string? line = pending.Result;
         pending = null;
         return line ?? throw Died($"closed its stdout instead of answering '{what}'", null);
+    }
+
+    // Linux and macOS: this thread waits for the child's output with poll(2) and reads it itself (issue 26: the
+    // asynchronous read cost a pool thread's hand-off and a sched_yield spin per answer — 18 % of a served gate's samples).
+    private string ReceiveSynchronously(BoundedLineReader reader, string what, string request, TimeSpan timeout, TimeSpan? wait)
+    {
+        var allowed = wait is { } w ? (w < TimeSpan.Zero ? TimeSpan.Zero : w) : timeout;
+        deadline = allowed >= TimeSpan.FromDays(1) ? long.MaxValue : Stopwatch.GetTimestamp() + (long)(allowed.TotalSeconds * Stopwatch.Frequency);
+        string? line;
+        try
+        {
+            line = reader.ReadLine(waitForAnswer!);
+        }
+        catch (TimeoutException)
+        {
+            throw TimedOut(what, request, timeout);
+        }
+        catch (LineTooLongException tooLong)
+        {
+            dead = true;
+            Kill();
+            throw new AdapterFailureException($"'{commandLine}' answered '{what}' with a {tooLong.Message}; it was stopped");
+        }
+        catch (IOException e)
+        {
+            throw Died($"reading the answer to '{what}' failed", e);
+        }
+
+        return line ?? throw Died($"closed its stdout instead of answering '{what}'", null);
+    }
+
+    // Waits until the child's stdout has input, its end or an error (a read then returns at once); false at the deadline.
+    private bool WaitForAnswer()
+    {
+        while (true)
+        {
+            long left = deadline == long.MaxValue ? -1 : deadline - Stopwatch.GetTimestamp();
+            if (deadline != long.MaxValue && left <= 0)
+            {
+                return Poll.Readable(stdoutFd, 0);
+            }
+
+            int ms = left < 0 ? -1 : (int)Math.Min(int.MaxValue, (left * 1000 + Stopwatch.Frequency - 1) / Stopwatch.Frequency);
+            if (Poll.Readable(stdoutFd, ms))
+            {
+                return true;
+            }
+        }
+    }
+
+    private AdapterFailureException TimedOut(string what, string request, TimeSpan timeout)
+    {
+        dead = true;
+        if (stdoutPipe is not null && ImplProcesses.ClosedStdout(tag, stdoutPipe, commandLine))
+        {
+            // Alive, but nothing of it can answer any more (issue 28: this was reported as a slow answer).
+            Kill();
+            return new AdapterFailureException(
+                string.Create(CultureInfo.InvariantCulture, $"'{commandLine}' closed its stdout but is still running, so it cannot answer '{what}'; it was killed after {timeout.TotalSeconds:0.###} s (--timeout){TailText()}"));
+        }
+
+        Kill();
+        return new AdapterFailureException(
+            string.Create(CultureInfo.InvariantCulture, $"'{commandLine}' did not answer '{what}' within {timeout.TotalSeconds:0.###} s (--timeout); it was killed. Request: {Wire.Brief(request, 200)}{TailText()}"));
     }
 
     /// <inheritdoc/>
@@ -223,6 +348,11 @@ internal sealed class LineProcess : IDisposable
         {
             if (!process.HasExited)
             {
+                if (!dead && queuedBytes > 0)
+                {
+                    Flush("end of input");
+                }
+
                 process.StandardInput.Close(); // end of input: a well-behaved implementation exits
                 if (!process.WaitForExit(1000))
                 {
@@ -230,7 +360,7 @@ internal sealed class LineProcess : IDisposable
                 }
             }
         }
-        catch (Exception e) when (e is IOException or InvalidOperationException)
+        catch (Exception e) when (e is IOException or InvalidOperationException or AdapterFailureException)
         {
             Kill();
         }

@@ -367,7 +367,9 @@ public sealed class ProcessAdapter : ICellPhysics, IDisposable
                 WalkWire.WriteFields(w, walk);
             },
             a => LearnAll(WalkWire.ReadAnswer(a, walk.Queries), walk.Scene is not null),
-            r => ProjectAll(r.FindCellWalk(walk), walk.Scene is not null));
+            r => ProjectAll(r.FindCellWalk(walk), walk.Scene is not null) is var g && g.Length == walk.Queries
+                ? g
+                : throw new InvalidOperationException("the reference answered the walk with another number of queries")); // no guess: asked and read as the child answers
     }
 
     private void FindCellFields(Utf8JsonWriter w, Scene? scene, CellId cell, IReadOnlyList<Sphere> spheres, CellId current)

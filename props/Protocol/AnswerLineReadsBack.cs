@@ -1,0 +1,91 @@
+using AcPhys.Core;
+using AcPhys.Props.Support;
+using AcPhys.Spec.Adapters;
+using AcPhys.Spec.Protocol;
+using FsCheck;
+using FsCheck.Fluent;
+
+namespace AcPhys.Props.Protocol;
+
+/// <summary>
+/// ANSWER-LINE-READS-BACK: the line the pipelined transport expects for a guess reads back, through the readers the
+/// tool applies to a child's answer, as exactly that guess (issue 26). The transport accepts an answer whose text is
+/// that line without parsing it, so this is what makes the shortcut the same as the comparison by value.
+/// </summary>
+public sealed class AnswerLineReadsBack
+{
+    private static readonly Gen<CellId> Cells = Gen.OneOf(
+        Gen.Choose(0, int.MaxValue).Select(v => new CellId((uint)v * 2u + 1u)),
+        Gen.Elements(0x00000000u, 0xFFFFFFFFu, 0xA9B40017u, 0x0000FFFFu, 0x01D90100u).Select(v => new CellId(v)));
+
+    private static readonly Gen<FindCellResult> FindCells =
+        from cells in Gen.ListOf(Cells).Select(l => l.Take(9).ToArray())
+        from containing in Cells
+        from loaded in Gen.OneOf(Gen.Constant<bool[]?>(null), Gen.ArrayOf(ArbMap.Default.GeneratorFor<bool>(), cells.Length).Select(a => (bool[]?)a))
+        from hits in Gen.Elements<bool?>(null, true, false)
+        select new FindCellResult(cells, containing) { Loaded = loaded, HitsInteriorCell = hits };
+
+    private static readonly Gen<float> Floats = Gen.OneOf(
+        Gen.Choose(int.MinValue, int.MaxValue).Select(BitConverter.Int32BitsToSingle),
+        Gen.Elements(0f, -0f, float.Epsilon, -float.Epsilon, float.MaxValue, float.MinValue, float.PositiveInfinity, float.NegativeInfinity, float.NaN, 1e-45f, 191.99998f, 192f));
+
+    [CiProperty(MaxTest = 3000, DisplayName = "ANSWER-LINE-READS-BACK: a find_cell guess's expected line reads back as the same answer (cells, containing, loaded, hits_interior_cell)")]
+    public Property FindCellReadsBack() =>
+        Prop.ForAll(FindCells.ToArbitrary(), r =>
+            Same(ExpectedAnswer.Line(r), a => Wire.ReadFindCell(a), r)
+                .Classify(r.Loaded is null, "no loaded")
+                .Classify(r.HitsInteriorCell is null, "no hits_interior_cell")
+                .Classify(r.Cells.Count == 0, "no cells"));
+
+    [CiProperty(MaxTest = 1000, DisplayName = "ANSWER-LINE-READS-BACK: a find_cell_walk guess's expected line reads back as the same answers, one per query")]
+    public Property WalkReadsBack() =>
+        Prop.ForAll(Gen.ListOf(FindCells).Select(l => l.Take(6).ToArray()).ToArbitrary(), walk =>
+            Same(ExpectedAnswer.Line((IReadOnlyList<FindCellResult>)walk), a => WalkWire.ReadAnswer(a, walk.Length), (IReadOnlyList<FindCellResult>)walk)
+                .Classify(walk.Length == 0, "empty walk"));
+
+    [CiProperty(MaxTest = 3000, DisplayName = "ANSWER-LINE-READS-BACK: an adjust_to_outside guess reads back bit for bit (-0, subnormals, infinities); a NaN gets no expected line")]
+    public Property AdjustReadsBack() =>
+        Prop.ForAll(Gen.Zip(Gen.Zip(ArbMap.Default.GeneratorFor<bool>(), Cells), Gen.Zip(Floats, Floats)).ToArbitrary(), t =>
+        {
+            var r = new AdjustResult(t.Item1.Item1, t.Item1.Item2, t.Item2.Item1, t.Item2.Item2);
+            bool nan = float.IsNaN(r.X) || float.IsNaN(r.Y);
+            string? line = ExpectedAnswer.Line(r);
+            return (nan ? line is null : Same(line, a => new AdjustResult(Wire.ReadBool(a, "ok"), Wire.ReadCell(a, "cell"), Wire.ReadFloat(a, "x"), Wire.ReadFloat(a, "y")), r))
+                .Classify(nan, "NaN: compared by value");
+        });
+
+    [CiProperty(MaxTest = 2000, DisplayName = "ANSWER-LINE-READS-BACK: lcoord, cell, cell-list, ok and scene_id guesses read back as themselves")]
+    public Property SmallAnswersReadBack() =>
+        Prop.ForAll(Gen.Zip(Gen.Zip(Cells, Gen.Choose(-5000, 5000)), Gen.Zip(ArbMap.Default.GeneratorFor<bool>(), Gen.ListOf(Cells).Select(l => l.Take(12).ToArray()))).ToArbitrary(), t =>
+        {
+            var (cell, n) = t.Item1;
+            var (ok, cells) = t.Item2;
+            var lcoord = (ok, n, -n);
+            string id = "t" + n.ToString(System.Globalization.CultureInfo.InvariantCulture) + (ok ? "\"\\é" : string.Empty);
+            return Same(ExpectedAnswer.Line(lcoord), a => (Wire.ReadBool(a, "ok"), Wire.ReadInt(a, "x"), Wire.ReadInt(a, "y")), lcoord)
+                && Same(ExpectedAnswer.Line(cell), a => Wire.ReadCell(a, "cell"), cell)
+                && Same(ExpectedAnswer.Line((IReadOnlyList<CellId>)cells), a => Wire.ReadCells(a, "cells"), (IReadOnlyList<CellId>)cells)
+                && Same(ExpectedAnswer.Line(ok), a => Wire.ReadBool(a, "ok"), ok)
+                && Same(ExpectedAnswer.Line(id), a => Wire.ReadString(a, "scene_id"), id);
+        });
+
+    [Fact(DisplayName = "ANSWER-LINE-READS-BACK: a find_cell guess whose loaded is not parallel to its cells gets no expected line (the reader refuses that answer)")]
+    public void UnparallelLoadedHasNoLine()
+    {
+        var r = new FindCellResult([new CellId(0xA9B40017u)], CellId.None) { Loaded = [true, false] };
+        Assert.Null(ExpectedAnswer.Line(r));
+        Assert.NotNull(ExpectedAnswer.Line(r with { Loaded = [true] }));
+    }
+
+    // The line is read as the transport reads an answer (Wire.Parse, strict), then compared as the slow path compares.
+    private static bool Same<T>(string? line, Func<System.Text.Json.JsonElement, T> read, T guess)
+    {
+        if (line is null)
+        {
+            return false;
+        }
+
+        using var doc = Wire.Parse(line);
+        return SameAnswer.Of(read(doc.RootElement), guess) && ExpectedAnswer.Is(line, guess);
+    }
+}
