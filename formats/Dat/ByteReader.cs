@@ -184,6 +184,19 @@ public sealed class ByteReader(byte[] data, string kind, uint id, bool named = t
     /// <param name="field">What the padding follows.</param>
     public void Align(string? field) => Take((4 - (Position % 4)) % 4, Sub(field, " (ALIGN padding)"));
 
+    /// <summary>Whether the next <paramref name="n"/> bytes are all there and all zero (the position does not move).</summary>
+    /// <param name="n">How many.</param>
+    /// <returns>True when they are.</returns>
+    public bool NextAreZero(int n) => n <= Remaining && !data.AsSpan(Position, n).ContainsAnyExcept((byte)0);
+
+    /// <summary>Moves past <paramref name="n"/> bytes a caller has already checked (<see cref="NextAreZero"/>).</summary>
+    /// <param name="n">How many.</param>
+    public void Skip(int n)
+    {
+        ArgumentOutOfRangeException.ThrowIfGreaterThan(n, Remaining);
+        Position += n;
+    }
+
     /// <summary>Refuses trailing bytes.</summary>
     public void End() => Require(Remaining == 0, "end of record", Position, $"{Remaining} trailing byte(s)");
 

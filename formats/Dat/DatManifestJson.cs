@@ -96,7 +96,7 @@ public static class DatManifestJson
     {
         // Parse once (issue 26): a manifest inside an already parsed request is read in place. Only one nested beyond
         // what Read(string) parses (MaxDepth 24; generous margin here) takes the text path, so its refusal reads as before.
-        if (Depth(element, 0) > 16)
+        if (Deeper(element, 16))
         {
             return Read(element.GetRawText(), source);
         }
@@ -141,12 +141,40 @@ public static class DatManifestJson
         }
     }
 
-    private static int Depth(JsonElement e, int depth) => e.ValueKind switch
+    // Whether the element nests deeper than `most` levels (stops at the first such branch; no enumerator allocated).
+    private static bool Deeper(JsonElement e, int most)
     {
-        JsonValueKind.Object => e.EnumerateObject().Aggregate(depth + 1, (d, p) => Math.Max(d, Depth(p.Value, depth + 1))),
-        JsonValueKind.Array => e.EnumerateArray().Aggregate(depth + 1, (d, v) => Math.Max(d, Depth(v, depth + 1))),
-        _ => depth,
-    };
+        if (most < 0)
+        {
+            return true;
+        }
+
+        switch (e.ValueKind)
+        {
+            case JsonValueKind.Object:
+                foreach (var p in e.EnumerateObject())
+                {
+                    if (Deeper(p.Value, most - 1))
+                    {
+                        return true;
+                    }
+                }
+
+                return most == 0;
+            case JsonValueKind.Array:
+                foreach (var v in e.EnumerateArray())
+                {
+                    if (Deeper(v, most - 1))
+                    {
+                        return true;
+                    }
+                }
+
+                return most == 0;
+            default:
+                return false;
+        }
+    }
 
     private static DatManifest Parse(JsonElement root, string source)
     {
@@ -173,23 +201,43 @@ public static class DatManifestJson
         var items = Items(root, "records", source);
         for (int i = 0; i < items.Count; i++)
         {
-            string at = $"$.records[{i}]";
+            // The paths and messages are spelt only when a check fails (issue 26: spelling them for every record was
+            // most of this reader's time on a served gate).
             var e = items[i];
-            Require(e.ValueKind == JsonValueKind.Object, at, "expected an object");
-            string idText = Str(e, "id", source, at);
-            Require(idText.StartsWith("0x", StringComparison.Ordinal) && idText.Length == 10 && uint.TryParse(idText.AsSpan(2), NumberStyles.AllowHexSpecifier, CultureInfo.InvariantCulture, out _), at + ".id", $"expected \"0x\" and 8 hex digits, got \"{Values.InputQuote.Brief(idText)}\"");
-            uint id = uint.Parse(idText.AsSpan(2), NumberStyles.AllowHexSpecifier, CultureInfo.InvariantCulture);
-            string dat = Str(e, "dat", source, at);
-            Require(dat is "cell" or "portal", at + ".dat", "expected \"cell\" or \"portal\"");
-            string type = Str(e, "type", source, at);
-            Require(Enum.TryParse<RecordType>(type, out var t) && Enum.IsDefined(t) && t.ToString() == type, at + ".type", $"expected one of {string.Join(", ", Enum.GetNames<RecordType>())}");
+            if (e.ValueKind != JsonValueKind.Object)
+            {
+                throw Fail(source, RecordPath(i), "expected an object");
+            }
+
+            string idText = Str(e, "id", source, i);
+            if (!(idText.StartsWith("0x", StringComparison.Ordinal) && idText.Length == 10 && uint.TryParse(idText.AsSpan(2), NumberStyles.AllowHexSpecifier, CultureInfo.InvariantCulture, out uint id)))
+            {
+                throw Fail(source, RecordPath(i) + ".id", $"expected \"0x\" and 8 hex digits, got \"{Values.InputQuote.Brief(idText)}\"");
+            }
+
+            string dat = Str(e, "dat", source, i);
+            if (dat is not ("cell" or "portal"))
+            {
+                throw Fail(source, RecordPath(i) + ".dat", "expected \"cell\" or \"portal\"");
+            }
+
+            string type = Str(e, "type", source, i);
+            if (!(Enum.TryParse<RecordType>(type, out var t) && Enum.IsDefined(t) && t.ToString() == type))
+            {
+                throw Fail(source, RecordPath(i) + ".type", $"expected one of {string.Join(", ", Enum.GetNames<RecordType>())}");
+            }
+
             var record = new ManifestRecord(id, dat == "portal", t);
-            Require(Str(e, "file", source, at) == record.File, at + ".file", $"expected \"{record.File}\" (the id's 8 upper-case hex digits)");
+            if (Str(e, "file", source, i) != record.File)
+            {
+                throw Fail(source, RecordPath(i) + ".file", $"expected \"{record.File}\" (the id's 8 upper-case hex digits)");
+            }
+
             records.Add(record);
         }
 
-        var blocks = Items(root, "blocks", source).Select((x, i) => Block(x, $"$.blocks[{i}]", source)).ToList();
-        var unloadedBlocks = Items(root, "unloadedBlocks", source).Select((x, i) => Block(x, $"$.unloadedBlocks[{i}]", source)).ToList();
+        var blocks = Blocks(root, "blocks", source);
+        var unloadedBlocks = Blocks(root, "unloadedBlocks", source);
         var unloadedCells = Items(root, "unloadedCells", source).Select((x, i) => Cell(x, $"$.unloadedCells[{i}]", source)).ToList();
         var elsewhere = new List<(CellId, IReadOnlyList<CellId>)>();
         var ve = Items(root, "visibleElsewhere", source);
@@ -244,6 +292,33 @@ public static class DatManifestJson
         return Text(e, $"{at}.{name}", source);
     }
 
+    // A field of records[index]: its path is spelt only for a message.
+    private static string Str(JsonElement parent, string name, string source, int index)
+    {
+        if (!parent.TryGetProperty(name, out var e))
+        {
+            throw new DatFormatException($"{source}: {RecordPath(index)}.{name}: missing");
+        }
+
+        if (e.ValueKind != JsonValueKind.String)
+        {
+            throw new DatFormatException($"{source}: {RecordPath(index)}.{name}: expected a string");
+        }
+
+        try
+        {
+            return e.GetString()!;
+        }
+        catch (InvalidOperationException)
+        {
+            throw new DatFormatException($"{source}: {RecordPath(index)}.{name}: not valid text (invalid UTF-8 or a lone surrogate)");
+        }
+    }
+
+    private static string RecordPath(int index) => string.Create(CultureInfo.InvariantCulture, $"$.records[{index}]");
+
+    private static DatFormatException Fail(string source, string path, string message) => new($"{source}: {path}: {message}");
+
     private static string Text(JsonElement e, string path, string source)
     {
         if (e.ValueKind != JsonValueKind.String)
@@ -259,6 +334,41 @@ public static class DatManifestJson
         {
             throw new DatFormatException($"{source}: {path}: not valid text (invalid UTF-8 or a lone surrogate)");
         }
+    }
+
+    private static List<LandblockId> Blocks(JsonElement root, string name, string source)
+    {
+        var items = Items(root, name, source);
+        var blocks = new List<LandblockId>(items.Count);
+        for (int i = 0; i < items.Count; i++)
+        {
+            var e = items[i];
+            blocks.Add(e.ValueKind == JsonValueKind.String && ValidText(e) is { } text && TryBlock(text, out var block)
+                ? block
+                : Block(e, string.Create(CultureInfo.InvariantCulture, $"$.{name}[{i}]"), source)); // not a block: read again for its message
+        }
+
+        return blocks;
+    }
+
+    private static string? ValidText(JsonElement e)
+    {
+        try
+        {
+            return e.GetString();
+        }
+        catch (InvalidOperationException)
+        {
+            return null;
+        }
+    }
+
+    private static bool TryBlock(string text, out LandblockId block)
+    {
+        ushort v = 0;
+        bool ok = text.StartsWith("0x", StringComparison.Ordinal) && text.Length == 6 && ushort.TryParse(text.AsSpan(2), NumberStyles.AllowHexSpecifier, CultureInfo.InvariantCulture, out v);
+        block = new LandblockId(v);
+        return ok;
     }
 
     private static LandblockId Block(JsonElement e, string path, string source)

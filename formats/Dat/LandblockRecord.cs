@@ -40,6 +40,16 @@ public static class LandblockRecord
         r.Require(id == expectedId, "id", 0, $"record id {RecordIds.Text(id)} is not its name {RecordIds.Text(expectedId)}");
         uint hasObjects = r.U32("hasObjects");
         r.Require(hasObjects <= 1, "hasObjects", 4, $"{hasObjects}: expected 0 or 1 (ACE treats anything but 1 as 0)");
+        if (!named && r.NextAreZero((81 * 2) + 81))
+        {
+            // A flat block (every scene's): one scan of the terrain and height words instead of 162 checked reads; any
+            // other block is read field by field below, which refuses it with the same message (issue 26).
+            r.Skip((81 * 2) + 81);
+            r.Align("height");
+            r.End();
+            return hasObjects == 1;
+        }
+
         for (int i = 0; i < 81; i++)
         {
             int at = r.Position;

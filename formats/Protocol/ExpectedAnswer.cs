@@ -19,24 +19,27 @@ internal static class ExpectedAnswer
     /// <remarks>Only where reading the line gives the guess back exactly: a NaN reads back as the one NaN the reader
     /// makes, whatever its payload was, and a <c>loaded</c> not parallel to <c>cells</c> is refused by the reader, so such
     /// guesses get no line.</remarks>
-    public static string? Line(object? guess) => guess switch
-    {
-        FindCellResult r => Parallel(r) ? Wire.Line(w => Wire.WriteFindCell(w, r)) : null,
-        IReadOnlyList<FindCellResult> walk => walk.All(Parallel) ? Wire.Line(w => WalkWire.WriteAnswer(w, walk)) : null,
-        IReadOnlyList<CellId> cells => Wire.Line(w => Wire.WriteCells(w, "cells", cells)),
-        AdjustResult a => float.IsNaN(a.X) || float.IsNaN(a.Y) ? null : Wire.Line(w => Adjust(w, a)),
-        ValueTuple<bool, int, int> lcoord => Wire.Line(w => Lcoord(w, lcoord)),
-        CellId id => Wire.Line(w => Wire.WriteCell(w, "cell", id)),
-        bool ok => Wire.Line(w => w.WriteBoolean("ok", ok)), // inbound_valid_cellid, unload_scene
-        string sceneId => Wire.Line(w => w.WriteString("scene_id", sceneId)), // load_scene
-        _ => null,
-    };
+    public static string? Line(object? guess) => Fields(guess) is { } fields ? Wire.Line(fields) : null;
 
     /// <summary>Whether <paramref name="answer"/> is the expected line of <paramref name="guess"/>.</summary>
     /// <param name="answer">The child's answer line.</param>
     /// <param name="guess">The guess.</param>
     /// <returns>True when the text is the same; false says nothing (compare by value).</returns>
-    public static bool Is(string answer, object? guess) => Line(guess) is { } line && string.Equals(answer, line, StringComparison.Ordinal);
+    public static bool Is(string answer, object? guess) => Fields(guess) is { } fields && Wire.LineIs(answer, fields);
+
+    // The fields of the guess's line, or null where reading it back would not give the guess (see Line).
+    private static Action<Utf8JsonWriter>? Fields(object? guess) => guess switch
+    {
+        FindCellResult r => Parallel(r) ? w => Wire.WriteFindCell(w, r) : null,
+        IReadOnlyList<FindCellResult> walk => walk.All(Parallel) ? w => WalkWire.WriteAnswer(w, walk) : null,
+        IReadOnlyList<CellId> cells => w => Wire.WriteCells(w, "cells", cells),
+        AdjustResult a => float.IsNaN(a.X) || float.IsNaN(a.Y) ? null : w => Adjust(w, a),
+        ValueTuple<bool, int, int> lcoord => w => Lcoord(w, lcoord),
+        CellId id => w => Wire.WriteCell(w, "cell", id),
+        bool ok => w => w.WriteBoolean("ok", ok), // inbound_valid_cellid, unload_scene
+        string sceneId => w => w.WriteString("scene_id", sceneId), // load_scene
+        _ => null,
+    };
 
     private static bool Parallel(FindCellResult r) => r.Loaded is null || r.Loaded.Count == r.Cells.Count;
 

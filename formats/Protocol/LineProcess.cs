@@ -17,6 +17,7 @@ internal sealed class LineProcess : IDisposable
     private const int TailLines = 20;
     private const int SigKill = 9;
     private const int MaxStderrChars = 1000;
+    private const int PipeBytes = 1 << 20;
 
     // On Linux and macOS the implementation runs as the leader of its own process group (setsid), with a watcher in
     // that group that ends the group once acphys is gone: SIGKILL of acphys included, which no handler sees. The
@@ -115,7 +116,15 @@ internal sealed class LineProcess : IDisposable
             {
                 child.stdoutFd = fd;
                 child.waitForAnswer = child.WaitForAnswer;
+                _ = Poll.GrowPipe(fd, PipeBytes);
             }
+        }
+
+        if (process.StandardInput.BaseStream is System.IO.Pipes.PipeStream input && !OperatingSystem.IsWindows())
+        {
+            // Room for ~80 scene loads ahead of the child (issue 26): with the default 64 KiB the tool blocked writing
+            // whenever the child fell a few scenes behind, and each side then waited for the other in turn.
+            _ = Poll.GrowPipe(input.SafePipeHandle.DangerousGetHandle().ToInt32(), PipeBytes);
         }
 
         return child;

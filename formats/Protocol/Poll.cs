@@ -27,6 +27,18 @@ internal static class Poll
         return errno == Interrupted ? false : throw new IOException($"poll failed (errno {errno})");
     }
 
+    /// <summary>Asks Linux for a pipe of <paramref name="bytes"/> (F_SETPIPE_SZ); a refusal or another system keeps the pipe as it is.</summary>
+    /// <param name="fd">Either end of the pipe.</param>
+    /// <param name="bytes">The size wanted (at most /proc/sys/fs/pipe-max-size for an unprivileged process).</param>
+    /// <returns>True when the pipe holds that much now.</returns>
+    public static bool GrowPipe(int fd, int bytes) => OperatingSystem.IsLinux() && NativeFcntl(fd, SetPipeSize, bytes) >= bytes;
+
+    private const int SetPipeSize = 1031; // F_SETPIPE_SZ (Linux)
+
+    [DllImport("libc", EntryPoint = "fcntl", SetLastError = true)]
+    [DefaultDllImportSearchPaths(DllImportSearchPath.SafeDirectories)]
+    private static extern int NativeFcntl(int fd, int command, int argument);
+
     [DllImport("libc", EntryPoint = "poll", SetLastError = true)]
     [DefaultDllImportSearchPaths(DllImportSearchPath.SafeDirectories)]
     private static extern int NativePoll(ref PollFd fds, nuint count, int timeout);

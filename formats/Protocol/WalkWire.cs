@@ -75,13 +75,13 @@ public static class WalkWire
         int i = 0;
         foreach (var s in steps.EnumerateArray())
         {
-            string at = string.Create(CultureInfo.InvariantCulture, $"steps[{i}]");
             if (s.ValueKind != JsonValueKind.Object)
             {
-                throw new WireException($"field \"{at}\" must be an object {{x,y}}, got {Wire.Show(s)}");
+                throw new WireException($"field \"{StepPath(i)}\" must be an object {{x,y}}, got {Wire.Show(s)}");
             }
 
-            moves[i++] = new Vector2(ReadFloatAt(s, "x", at), ReadFloatAt(s, "y", at));
+            moves[i] = new Vector2(ReadFloatAt(s, "x", i), ReadFloatAt(s, "y", i));
+            i++;
         }
 
         bool loadCells = request.TryGetProperty("load_cells", out var lc) && lc.ValueKind != JsonValueKind.Null && Wire.ReadBool(request, "load_cells");
@@ -139,7 +139,8 @@ public static class WalkWire
         return answers;
     }
 
-    private static float ReadFloatAt(JsonElement obj, string name, string at)
+    // The step's path is spelt only for a message (issue 26: per step it was a tenth of a walk request's reading).
+    private static float ReadFloatAt(JsonElement obj, string name, int step)
     {
         try
         {
@@ -147,7 +148,9 @@ public static class WalkWire
         }
         catch (WireException e)
         {
-            throw new WireException($"{at}: {e.Message}", e);
+            throw new WireException($"{StepPath(step)}: {e.Message}", e);
         }
     }
+
+    private static string StepPath(int step) => string.Create(CultureInfo.InvariantCulture, $"steps[{step}]");
 }

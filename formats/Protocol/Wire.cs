@@ -25,17 +25,40 @@ public static class Wire
     /// <summary>Builds one message line (no newline) with the fields <paramref name="fields"/> writes.</summary>
     /// <param name="fields">Writes the object's properties.</param>
     /// <returns>The compact JSON text.</returns>
+    /// <remarks>The buffer and writer are the thread's own, reused (issue 26: a fresh growing buffer and writer per
+    /// line was most of what both ends of a served gate allocated); a line built while another is being built (a
+    /// request that loads its scene first) takes the next one.</remarks>
     public static string Line(Action<Utf8JsonWriter> fields)
     {
-        var buffer = new ArrayBufferWriter<byte>(128);
-        using (var writer = new Utf8JsonWriter(buffer, WriterOptions))
+        var line = LineWriter.Rent();
+        try
         {
-            writer.WriteStartObject();
-            fields(writer);
-            writer.WriteEndObject();
+            return Encoding.UTF8.GetString(line.Write(fields));
         }
+        finally
+        {
+            line.Return();
+        }
+    }
 
-        return Encoding.UTF8.GetString(buffer.WrittenSpan);
+    /// <summary>Whether <paramref name="text"/> is exactly the line <paramref name="fields"/> builds (see <see cref="Line"/>), without building a string.</summary>
+    /// <param name="text">The text.</param>
+    /// <param name="fields">Writes the object's properties.</param>
+    /// <returns>True when equal.</returns>
+    public static bool LineIs(string text, Action<Utf8JsonWriter> fields)
+    {
+        var line = LineWriter.Rent();
+        try
+        {
+            var bytes = line.Write(fields);
+            return Ascii.IsValid(bytes)
+                ? bytes.Length == text.Length && Ascii.Equals(bytes, text)
+                : string.Equals(Encoding.UTF8.GetString(bytes), text, StringComparison.Ordinal);
+        }
+        finally
+        {
+            line.Return();
+        }
     }
 
     /// <summary>Parses one message line into its root object.</summary>
@@ -458,6 +481,54 @@ public static class Wire
         if (problem is not null)
         {
             throw new WireException($"field \"{name}\": {problem}");
+        }
+    }
+
+    // One thread's reusable line buffers, one per nesting level in use.
+    private sealed class LineWriter
+    {
+        private const int MaxKeptBytes = 1 << 20;
+
+        [ThreadStatic]
+        private static List<LineWriter>? pool;
+
+        [ThreadStatic]
+        private static int depth;
+
+        private readonly ArrayBufferWriter<byte> buffer = new(4096);
+        private readonly Utf8JsonWriter writer;
+
+        private LineWriter() => writer = new Utf8JsonWriter(buffer, WriterOptions);
+
+        public static LineWriter Rent()
+        {
+            var lines = pool ??= [];
+            if (depth == lines.Count)
+            {
+                lines.Add(new LineWriter());
+            }
+
+            return lines[depth++];
+        }
+
+        public ReadOnlySpan<byte> Write(Action<Utf8JsonWriter> fields)
+        {
+            buffer.ResetWrittenCount();
+            writer.Reset(buffer); // also after a line whose fields threw half-way
+            writer.WriteStartObject();
+            fields(writer);
+            writer.WriteEndObject();
+            writer.Flush();
+            return buffer.WrittenSpan;
+        }
+
+        public void Return()
+        {
+            depth--;
+            if (buffer.Capacity > MaxKeptBytes)
+            {
+                pool![depth] = new LineWriter(); // one huge line does not keep its buffer
+            }
         }
     }
 }

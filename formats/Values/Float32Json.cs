@@ -29,7 +29,8 @@ public static class Float32Json
         {
             case JsonValueKind.Number:
                 // Parsed straight to float32 (one rounding), so the shortest round-trip text of a float32 reads back as its bits.
-                value = float.Parse(e.GetRawText(), NumberStyles.Float, CultureInfo.InvariantCulture);
+                // Read from the number's own UTF-8 text in the document (no string per number: issue 26).
+                value = float.Parse(System.Runtime.InteropServices.JsonMarshal.GetRawUtf8Value(e), NumberStyles.Float, CultureInfo.InvariantCulture);
                 if (!float.IsFinite(value))
                 {
                     problem = nonFiniteNames ? Overflow + InfinityHint : Overflow;
