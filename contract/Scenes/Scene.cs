@@ -14,6 +14,19 @@ public sealed record ScenePiece(Box? Box, IReadOnlyList<CellPlane>? Planes)
     /// <returns>The piece.</returns>
     public static ScenePiece FromBox(Vector3 min, Vector3 max) => new(new Box(min, max), null);
 
+    /// <summary>Returns a plane piece whose core piece a reader has already built while checking the planes.</summary>
+    /// <param name="planes">The planes.</param>
+    /// <param name="built"><c>new ConvexPiece(planes)</c>, built by the caller: <see cref="ToConvex"/> returns it instead of building it again.</param>
+    /// <returns>The piece.</returns>
+    /// <remarks>Issue 26: a scene read from dat records built each piece three times (the reader's check, the scene
+    /// rules' check, the query scene).</remarks>
+    public static ScenePiece OfChecked(IReadOnlyList<CellPlane> planes, ConvexPiece built)
+    {
+        var piece = new ScenePiece(null, planes);
+        Cache.AddOrUpdate(piece, built);
+        return piece;
+    }
+
     /// <summary>Builds the core piece.</summary>
     /// <returns>The convex piece.</returns>
     public ConvexPiece ToConvex() => Cache.GetValue(this, p => p.Box is { } b ? ConvexPiece.FromBox(b.Min, b.Max) : new ConvexPiece(p.Planes!));

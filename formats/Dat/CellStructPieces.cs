@@ -82,16 +82,19 @@ public static class CellStructPieces
             n = n.Positive ?? throw new DatFormatException($"{where}: node at byte {n.Offset} ('{BspTags.Name(n.Tag)}') ends a positive chain without a LEAF");
         }
 
+        CellPlane[] own = [.. planes];
+        ConvexPiece built;
         try
         {
-            _ = new ConvexPiece(planes);
+            built = new ConvexPiece(own);
         }
         catch (ArgumentException e)
         {
             throw new DatFormatException($"{where}: the positive chain from byte {node.Offset} is no convex piece ({planes.Count} planes): {e.Message.Split(" (Parameter", 2)[0]}");
         }
 
-        pieces.Add(PieceOf(planes));
+        var piece = PieceOf(own);
+        pieces.Add(piece.Box is null ? ScenePiece.OfChecked(own, built) : piece); // the piece checked here is the one queried
         foreach (var c in chain)
         {
             if (c.Negative is { } neg)

@@ -138,7 +138,11 @@ public static class Wire
     /// <param name="w">The writer.</param>
     /// <param name="name">The property name.</param>
     /// <param name="id">The id.</param>
-    public static void WriteCell(Utf8JsonWriter w, string name, CellId id) => w.WriteString(name, CellIdText.Format(id));
+    public static void WriteCell(Utf8JsonWriter w, string name, CellId id)
+    {
+        Span<byte> text = stackalloc byte[CellTextBytes];
+        w.WriteString(name, CellText(id, text));
+    }
 
     /// <summary>Writes a float32 as the exact JSON number of its value, or a string for the non-finite values.</summary>
     /// <param name="w">The writer.</param>
@@ -182,9 +186,10 @@ public static class Wire
     public static void WriteCells(Utf8JsonWriter w, string name, IReadOnlyList<CellId> cells)
     {
         w.WriteStartArray(name);
-        foreach (var c in cells)
+        Span<byte> text = stackalloc byte[CellTextBytes];
+        for (int i = 0; i < cells.Count; i++)
         {
-            w.WriteStringValue(CellIdText.Format(c));
+            w.WriteStringValue(CellText(cells[i], text));
         }
 
         w.WriteEndArray();
@@ -482,6 +487,18 @@ public static class Wire
         {
             throw new WireException($"field \"{name}\": {problem}");
         }
+    }
+
+    private const int CellTextBytes = 10;
+
+    // CellIdText.Format's text ("0x" and eight upper-case hex digits) as UTF-8, without a string per id (issue 26).
+    private static ReadOnlySpan<byte> CellText(CellId id, Span<byte> text)
+    {
+        text[0] = (byte)'0';
+        text[1] = (byte)'x';
+        bool ok = id.Value.TryFormat(text[2..], out int written, "X8", System.Globalization.CultureInfo.InvariantCulture);
+        System.Diagnostics.Debug.Assert(ok && written == 8, "a uint is eight hex digits");
+        return text[..CellTextBytes];
     }
 
     // One thread's reusable line buffers, one per nesting level in use.

@@ -22,6 +22,9 @@ public sealed class SceneRules(string source)
     /// <exception cref="SceneFormatException">The first broken rule, with the JSON path it would have in the scene's file.</exception>
     public Scene Check(Scene scene, string at)
     {
+        // The paths are spelt only for a message (issue 26: spelling every field's path was most of this check's time
+        // on a served gate); the rules, their order and their messages are the JSON reader's.
+        var root = new At(at);
         var blocks = Paths(scene.Blocks, at, "blocks");
         var unloadedBlocks = Paths(scene.UnloadedBlocks, at, "unloadedBlocks");
         var declared = Declared(blocks.Concat(unloadedBlocks));
@@ -31,16 +34,16 @@ public sealed class SceneRules(string source)
             EnvCell(id, path);
         }
 
-        Count(scene.Cells.Count, $"{at}.cells");
+        Count(scene.Cells.Count, root.Then(".cells"));
         for (int i = 0; i < scene.Cells.Count; i++)
         {
-            Cell(scene.Cells[i], $"{at}.cells[{i}]");
+            Cell(scene.Cells[i], root.Index(".cells", i));
         }
 
-        Count(scene.Buildings.Count, $"{at}.buildings");
+        Count(scene.Buildings.Count, root.Then(".buildings"));
         for (int i = 0; i < scene.Buildings.Count; i++)
         {
-            Building(scene.Buildings[i], $"{at}.buildings[{i}]");
+            Building(scene.Buildings[i], root.Index(".buildings", i));
         }
 
         References(at, declared, scene.Cells, unloadedCells, scene.Buildings);
@@ -60,10 +63,23 @@ public sealed class SceneRules(string source)
         }
     }
 
+    /// <summary>Throws the scene's format error when a rule is broken; the message is written only then.</summary>
+    /// <param name="ok">True when the rule holds.</param>
+    /// <param name="path">The JSON path of the value.</param>
+    /// <param name="message">What is wrong (an interpolated string, formatted only when <paramref name="ok"/> is false: issue 26).</param>
+    /// <exception cref="SceneFormatException">When <paramref name="ok"/> is false.</exception>
+    public void Require(bool ok, string path, [System.Runtime.CompilerServices.InterpolatedStringHandlerArgument("ok")] ref Dat.FailureText message)
+    {
+        if (!ok)
+        {
+            throw new SceneFormatException($"{source}: {path}: {message.Text()}");
+        }
+    }
+
     /// <summary>A list holds at most <see cref="MaxItems"/> items.</summary>
     /// <param name="count">Its length.</param>
     /// <param name="path">Its path.</param>
-    public void Count(int count, string path) => Require(count <= MaxItems, path, $"expected an array of at most {MaxItems} items");
+    public void Count(int count, string path) => Count(count, new At(path));
 
     /// <summary>Every declared block (loaded or not) lies on the map and is declared once.</summary>
     /// <param name="blocks">The blocks with their paths, loaded first.</param>
@@ -83,53 +99,33 @@ public sealed class SceneRules(string source)
     /// <summary>A cell id names an env cell.</summary>
     /// <param name="cell">The id.</param>
     /// <param name="path">Its path.</param>
-    public void EnvCell(CellId cell, string path) => Require(cell.IsEnv, path, $"{cell} is not an env cell id (low word 0x0100..0xFFFD)");
+    public void EnvCell(CellId cell, string path) => EnvCell(cell, new At(path));
 
     /// <summary>A low word names an env cell.</summary>
     /// <param name="low">The low word.</param>
     /// <param name="path">Its path.</param>
-    public void EnvLow(ushort low, string path) =>
-        Require(low is >= LandDefs.FirstEnvCellId and <= LandDefs.LastEnvCellId, path, $"0x{low:X4} is not an env cell low word (0x0100..0xFFFD)");
+    public void EnvLow(ushort low, string path) => EnvLow(low, new At(path));
 
     /// <summary>A cell's rotation is a unit quaternion (±<see cref="SceneJson.UnitTolerance"/>).</summary>
     /// <param name="rotation">The rotation.</param>
     /// <param name="path">The rotation's path.</param>
-    public void UnitRotation(Quaternion rotation, string path)
-    {
-        float length = rotation.Length();
-        Require(MathF.Abs(length - 1f) <= SceneJson.UnitTolerance, path, $"quaternion (W, X, Y, Z) has length {length.ToString("R", CultureInfo.InvariantCulture)}, not 1 (±{SceneJson.UnitTolerance})");
-    }
+    public void UnitRotation(Quaternion rotation, string path) => UnitRotation(rotation, new At(path));
 
     /// <summary>A box is below its max corner on every axis.</summary>
     /// <param name="min">The min corner.</param>
     /// <param name="max">The max corner.</param>
     /// <param name="path">The box's path.</param>
-    public void Box(Vector3 min, Vector3 max, string path) =>
-        Require(min.X < max.X && min.Y < max.Y && min.Z < max.Z, path, "degenerate box: min must be below max on every axis");
+    public void Box(Vector3 min, Vector3 max, string path) => Box(min, max, new At(path));
 
     /// <summary>A plane's normal has a direction and a finite length.</summary>
     /// <param name="normal">The normal.</param>
     /// <param name="path">The plane's path.</param>
-    public void Normal(Vector3 normal, string path)
-    {
-        Require(normal.Length() > 1e-6f, path + ".n", $"degenerate plane: normal ({normal.X}, {normal.Y}, {normal.Z}) has no direction");
-        Require(float.IsFinite(normal.Length()), path + ".n", "non-finite plane normal (its length overflows)");
-    }
+    public void Normal(Vector3 normal, string path) => Normal(normal, new At(path));
 
     /// <summary>A piece's planes bound a convex piece.</summary>
     /// <param name="planes">The planes.</param>
     /// <param name="path">The piece's path.</param>
-    public void Convex(IReadOnlyList<CellPlane> planes, string path)
-    {
-        try
-        {
-            _ = new ConvexPiece(planes);
-        }
-        catch (ArgumentException e)
-        {
-            throw new SceneFormatException($"{source}: {path}.planes: {e.Message.Split(" (Parameter", 2)[0]}");
-        }
-    }
+    public void Convex(IReadOnlyList<CellPlane> planes, string path) => Convex(planes, new At(path));
 
     /// <summary>
     /// The cross-references of a scene: cell ids unique and in declared blocks, every portal, visible cell and building
@@ -142,16 +138,18 @@ public sealed class SceneRules(string source)
     /// <param name="buildings">The buildings (at <c>{at}.buildings[i]</c>).</param>
     public void References(string at, HashSet<LandblockId> declared, IReadOnlyList<SceneCell> cells, IReadOnlyList<(CellId Id, string Path)> unloadedCells, IReadOnlyList<SceneBuilding> buildings)
     {
-        var known = new Dictionary<CellId, string>();
+        var root = new At(at);
+        var known = new Dictionary<CellId, At>();
         for (int i = 0; i < cells.Count; i++)
         {
-            string path = $"{at}.cells[{i}].id";
+            var path = root.Index(".cells", i).Then(".id");
             Require(known.TryAdd(cells[i].Id, path), path, $"duplicate cell {cells[i].Id} (first at {known.GetValueOrDefault(cells[i].Id)})");
             Require(declared.Contains(cells[i].Id.Landblock), path, $"cell {cells[i].Id} lies in block {cells[i].Id.Landblock}, which the scene does not declare");
         }
 
-        foreach (var (id, path) in unloadedCells)
+        foreach (var (id, text) in unloadedCells)
         {
+            var path = new At(text);
             Require(known.TryAdd(id, path), path, $"duplicate cell {id} (first at {known.GetValueOrDefault(id)})");
             Require(declared.Contains(id.Landblock), path, $"cell {id} lies in block {id.Landblock}, which the scene does not declare");
         }
@@ -159,7 +157,7 @@ public sealed class SceneRules(string source)
         for (int i = 0; i < cells.Count; i++)
         {
             var c = cells[i];
-            string at0 = $"{at}.cells[{i}]";
+            var at0 = root.Index(".cells", i);
             for (int p = 0; p < c.Portals.Count; p++)
             {
                 var portal = c.Portals[p];
@@ -169,13 +167,13 @@ public sealed class SceneRules(string source)
                 }
 
                 var other = c.Id.WithLow(portal.Other);
-                Require(known.ContainsKey(other), $"{at0}.portals[{p}].other", $"unknown cell {other} (not declared in cells or unloadedCells)");
-                Require(other != c.Id, $"{at0}.portals[{p}].other", $"a portal of {c.Id} leads to itself");
+                Require(known.ContainsKey(other), at0.Index(".portals", p).Then(".other"), $"unknown cell {other} (not declared in cells or unloadedCells)");
+                Require(other != c.Id, at0.Index(".portals", p).Then(".other"), $"a portal of {c.Id} leads to itself");
             }
 
             for (int v = 0; v < c.Visible.Count; v++)
             {
-                Require(known.ContainsKey(c.Visible[v]), $"{at0}.visible[{v}]", $"unknown cell {c.Visible[v]} (not declared in cells or unloadedCells)");
+                Require(known.ContainsKey(c.Visible[v]), at0.Index(".visible", v), $"unknown cell {c.Visible[v]} (not declared in cells or unloadedCells)");
             }
         }
 
@@ -218,70 +216,145 @@ public sealed class SceneRules(string source)
         return [.. items.Select((x, i) => (x, $"{at}.{name}[{i}]"))];
     }
 
+    // The rules on a lazily spelt path (At): the public methods above give them a spelt one.
+    private void Require(bool ok, At path, [System.Runtime.CompilerServices.InterpolatedStringHandlerArgument("ok")] ref Dat.FailureText message)
+    {
+        if (!ok)
+        {
+            throw new SceneFormatException($"{source}: {path}: {message.Text()}");
+        }
+    }
+
+    private void Count(int count, At path) => Require(count <= MaxItems, path, $"expected an array of at most {MaxItems} items");
+
+    private void EnvCell(CellId cell, At path) => Require(cell.IsEnv, path, $"{cell} is not an env cell id (low word 0x0100..0xFFFD)");
+
+    private void EnvLow(ushort low, At path) =>
+        Require(low is >= LandDefs.FirstEnvCellId and <= LandDefs.LastEnvCellId, path, $"0x{low:X4} is not an env cell low word (0x0100..0xFFFD)");
+
+    private void UnitRotation(Quaternion rotation, At path)
+    {
+        float length = rotation.Length();
+        Require(MathF.Abs(length - 1f) <= SceneJson.UnitTolerance, path, $"quaternion (W, X, Y, Z) has length {length.ToString("R", CultureInfo.InvariantCulture)}, not 1 (±{SceneJson.UnitTolerance})");
+    }
+
+    private void Box(Vector3 min, Vector3 max, At path) =>
+        Require(min.X < max.X && min.Y < max.Y && min.Z < max.Z, path, $"degenerate box: min must be below max on every axis");
+
+    private void Normal(Vector3 normal, At path)
+    {
+        Require(normal.Length() > 1e-6f, path.Then(".n"), $"degenerate plane: normal ({normal.X}, {normal.Y}, {normal.Z}) has no direction");
+        Require(float.IsFinite(normal.Length()), path.Then(".n"), $"non-finite plane normal (its length overflows)");
+    }
+
+    private void Convex(IReadOnlyList<CellPlane> planes, At path) => Convex(() => new ConvexPiece(planes), path);
+
+    // A built scene's piece: the core piece it queries with (ToConvex, built once and kept) is the one checked.
+    private void Convex(ScenePiece piece, At path) => Convex(piece.ToConvex, path);
+
+    private void Convex(Func<ConvexPiece> build, At path)
+    {
+        try
+        {
+            _ = build();
+        }
+        catch (ArgumentException e)
+        {
+            throw new SceneFormatException($"{source}: {path}.planes: {e.Message.Split(" (Parameter", 2)[0]}");
+        }
+    }
+
     // A value the scene file holds as a JSON number: records give float32 values, and arithmetic on them (a portal
     // polygon's plane) could overflow, which a scene file cannot hold.
-    private void Finite(Vector3 v, string path) => Require(float.IsFinite(v.X) && float.IsFinite(v.Y) && float.IsFinite(v.Z), path, "non-finite value (a scene holds finite numbers)");
+    private void Finite(Vector3 v, At path) => Require(float.IsFinite(v.X) && float.IsFinite(v.Y) && float.IsFinite(v.Z), path, $"non-finite value (a scene holds finite numbers)");
 
-    private void Plane(CellPlane plane, string path)
+    private void Plane(CellPlane plane, At path)
     {
-        Finite(plane.Normal, path + ".n");
-        Require(float.IsFinite(plane.D), path + ".d", "non-finite value (a scene holds finite numbers)");
+        Finite(plane.Normal, path.Then(".n"));
+        Require(float.IsFinite(plane.D), path.Then(".d"), $"non-finite value (a scene holds finite numbers)");
         Normal(plane.Normal, path);
     }
 
-    private void Cell(SceneCell c, string at)
+    private void Cell(SceneCell c, At at)
     {
-        EnvCell(c.Id, at + ".id");
-        Finite(c.Origin, at + ".frame.origin");
-        UnitRotation(c.Rotation, at + ".frame.rotation");
-        Count(c.Pieces.Count, at + ".pieces");
-        Require(c.Pieces.Count > 0, at + ".pieces", "a cell needs at least one piece");
+        EnvCell(c.Id, at.Then(".id"));
+        Finite(c.Origin, at.Then(".frame.origin"));
+        UnitRotation(c.Rotation, at.Then(".frame.rotation"));
+        Count(c.Pieces.Count, at.Then(".pieces"));
+        Require(c.Pieces.Count > 0, at.Then(".pieces"), $"a cell needs at least one piece");
         for (int i = 0; i < c.Pieces.Count; i++)
         {
-            string path = $"{at}.pieces[{i}]";
+            var path = at.Index(".pieces", i);
             if (c.Pieces[i].Box is { } box)
             {
-                Finite(box.Min, path + ".box.min");
-                Finite(box.Max, path + ".box.max");
-                Box(box.Min, box.Max, path + ".box");
+                Finite(box.Min, path.Then(".box.min"));
+                Finite(box.Max, path.Then(".box.max"));
+                Box(box.Min, box.Max, path.Then(".box"));
                 continue;
             }
 
             var planes = c.Pieces[i].Planes!;
-            Count(planes.Count, path + ".planes");
+            Count(planes.Count, path.Then(".planes"));
             for (int k = 0; k < planes.Count; k++)
             {
-                Plane(planes[k], $"{path}.planes[{k}]");
+                Plane(planes[k], path.Index(".planes", k));
             }
 
-            Convex(planes, path);
+            Convex(c.Pieces[i], path);
         }
 
-        Count(c.Portals.Count, at + ".portals");
+        Count(c.Portals.Count, at.Then(".portals"));
         for (int i = 0; i < c.Portals.Count; i++)
         {
-            string path = $"{at}.portals[{i}]";
-            Plane(c.Portals[i].Plane, path + ".plane");
+            var path = at.Index(".portals", i);
+            Plane(c.Portals[i].Plane, path.Then(".plane"));
             if (!c.Portals[i].IsExit)
             {
-                EnvLow(c.Portals[i].Other, path + ".other");
+                EnvLow(c.Portals[i].Other, path.Then(".other"));
             }
         }
 
-        Count(c.Visible.Count, at + ".visible");
+        Count(c.Visible.Count, at.Then(".visible"));
         for (int i = 0; i < c.Visible.Count; i++)
         {
-            EnvCell(c.Visible[i], $"{at}.visible[{i}]");
+            EnvCell(c.Visible[i], at.Index(".visible", i));
         }
     }
 
-    private void Building(SceneBuilding b, string at)
+    private void Building(SceneBuilding b, At at)
     {
-        Finite(b.Origin, at + ".origin");
-        Count(b.Portals.Count, at + ".portals");
+        Finite(b.Origin, at.Then(".origin"));
+        Count(b.Portals.Count, at.Then(".portals"));
         for (int i = 0; i < b.Portals.Count; i++)
         {
-            EnvLow(b.Portals[i].Cell, $"{at}.portals[{i}].cell");
+            EnvLow(b.Portals[i].Cell, at.Index(".portals", i).Then(".cell"));
+        }
+    }
+
+    // A JSON path spelt only when asked (ToString): a root, up to three list items (".cells[2]", ".pieces[0]",
+    // ".planes[5]") and one tail of plain names (".frame.origin", ".n").
+    private readonly struct At(string root, string? n1 = null, int i1 = 0, string? n2 = null, int i2 = 0, string? n3 = null, int i3 = 0, string? tail = null)
+    {
+        public At Index(string name, int index) =>
+            tail is not null || n3 is not null ? new At(ToString() + name + "[" + index.ToString(CultureInfo.InvariantCulture) + "]")
+            : n1 is null ? new At(root, name, index)
+            : n2 is null ? new At(root, n1, i1, name, index)
+            : new At(root, n1, i1, n2, i2, name, index);
+
+        public At Then(string name) => new(root, n1, i1, n2, i2, n3, i3, tail is null ? name : tail + name);
+
+        public override string ToString()
+        {
+            var text = new System.Text.StringBuilder(root);
+            foreach (var (name, index) in new[] { (n1, i1), (n2, i2), (n3, i3) })
+            {
+                if (name is not null)
+                {
+                    text.Append(name).Append('[').Append(index.ToString(CultureInfo.InvariantCulture)).Append(']');
+                }
+            }
+
+            return text.Append(tail).ToString();
         }
     }
 }

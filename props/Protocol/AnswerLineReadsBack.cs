@@ -64,6 +64,7 @@ public sealed class AnswerLineReadsBack
             string id = "t" + n.ToString(System.Globalization.CultureInfo.InvariantCulture) + (ok ? "\"\\é" : string.Empty);
             return Same(ExpectedAnswer.Line(lcoord), a => (Wire.ReadBool(a, "ok"), Wire.ReadInt(a, "x"), Wire.ReadInt(a, "y")), lcoord)
                 && Same(ExpectedAnswer.Line(cell), a => Wire.ReadCell(a, "cell"), cell)
+                && ExpectedAnswer.Line(cell) == "{\"cell\":\"" + AcPhys.Core.Text.CellIdText.Format(cell) + "\"}" // the text cell ids have everywhere
                 && Same(ExpectedAnswer.Line((IReadOnlyList<CellId>)cells), a => Wire.ReadCells(a, "cells"), (IReadOnlyList<CellId>)cells)
                 && Same(ExpectedAnswer.Line(ok), a => Wire.ReadBool(a, "ok"), ok)
                 && Same(ExpectedAnswer.Line(id), a => Wire.ReadString(a, "scene_id"), id);
