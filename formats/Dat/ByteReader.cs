@@ -126,6 +126,19 @@ public sealed class ByteReader(byte[] data, string kind, uint id, bool named = t
     public Vector3 Vec(string? field)
     {
         int at = Position;
+        if (data.Length - at >= 12)
+        {
+            // All three there: one read (a short record is refused component by component below, as before).
+            var bytes = new ReadOnlySpan<byte>(data, at, 12);
+            var whole = new Vector3(
+                BinaryPrimitives.ReadSingleLittleEndian(bytes),
+                BinaryPrimitives.ReadSingleLittleEndian(bytes[4..]),
+                BinaryPrimitives.ReadSingleLittleEndian(bytes[8..]));
+            Position = at + 12;
+            Require(float.IsFinite(whole.X) && float.IsFinite(whole.Y) && float.IsFinite(whole.Z), field, at, "non-finite value");
+            return whole;
+        }
+
         var v = new Vector3(F32(field), F32(field), F32(field));
         Require(float.IsFinite(v.X) && float.IsFinite(v.Y) && float.IsFinite(v.Z), field, at, "non-finite value");
         return v;
@@ -203,11 +216,19 @@ public sealed class ByteReader(byte[] data, string kind, uint id, bool named = t
     // A member's path below a field, spelled only when fields are named.
     private string? Sub(string? field, string member) => named ? field + member : null;
 
+    // The hot path of every field (issue 26): one comparison; the refusal is built out of line.
     private ReadOnlySpan<byte> Take(int n, string? field)
     {
-        Require(n <= Remaining, field, Position, $"record ends ({Remaining} byte(s) left, {n} needed)");
-        var span = data.AsSpan(Position, n);
-        Position += n;
-        return span;
+        int at = Position;
+        if (n > data.Length - at)
+        {
+            throw Ends(n, field);
+        }
+
+        Position = at + n;
+        return new ReadOnlySpan<byte>(data, at, n);
     }
+
+    [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.NoInlining)]
+    private DatFormatException Ends(int n, string? field) => Error(field, Position, $"record ends ({Remaining} byte(s) left, {n} needed)");
 }

@@ -97,4 +97,13 @@ public static class DatSceneWriter
             throw new DatFormatException("scene cannot be written as records: " + message);
         }
     }
+
+    // The message is written only when the check fails (issue 26: per cell and block it was written every time).
+    private static void Require(bool ok, [System.Runtime.CompilerServices.InterpolatedStringHandlerArgument("ok")] ref FailureText message)
+    {
+        if (!ok)
+        {
+            throw new DatFormatException("scene cannot be written as records: " + message.Text());
+        }
+    }
 }

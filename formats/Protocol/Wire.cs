@@ -423,15 +423,20 @@ public static class Wire
         int i = 0;
         foreach (var s in array.EnumerateArray())
         {
-            string at = $"{name}[{i}]";
+            // The item's path is spelt only for a message (issue 26).
             if (s.ValueKind != JsonValueKind.Object)
             {
-                throw new WireException($"field \"{at}\" must be an object {{x,y,z,r}}, got {Show(s)}");
+                throw new WireException($"field \"{name}[{i}]\" must be an object {{x,y,z,r}}, got {Show(s)}");
             }
 
-            float r = FloatValue(Field(s, "r"), at + ".r");
-            Refuse(Values.SphereRadius.Problem(r), at + ".r");
-            spheres[i++] = new Sphere(new Vector3(FloatValue(Field(s, "x"), at + ".x"), FloatValue(Field(s, "y"), at + ".y"), FloatValue(Field(s, "z"), at + ".z")), r);
+            float r = FloatAt(s, "r", name, i);
+            if (Values.SphereRadius.Problem(r) is { } bad)
+            {
+                Refuse(bad, $"{name}[{i}].r");
+            }
+
+            spheres[i] = new Sphere(new Vector3(FloatAt(s, "x", name, i), FloatAt(s, "y", name, i), FloatAt(s, "z", name, i)), r);
+            i++;
         }
 
         return spheres;
@@ -477,6 +482,12 @@ public static class Wire
         v.ValueKind == JsonValueKind.String && CellIdText.TryParse(v.GetString(), out var id)
             ? id
             : throw new WireException($"field \"{name}\" must be a cell id string \"0xAABBCCCC\" (8 hex digits), got {Show(v)}");
+
+    // A float field of list[index]: read at once when it is there and well-formed; otherwise read again as before, for the message.
+    private static float FloatAt(JsonElement item, string field, string list, int index) =>
+        item.TryGetProperty(field, out var v) && Values.Float32Json.TryRead(v, nonFiniteNames: true, out float f, out _)
+            ? f
+            : FloatValue(Field(item, field), $"{list}[{index}].{field}");
 
     private static float FloatValue(JsonElement v, string name) =>
         Values.Float32Json.TryRead(v, nonFiniteNames: true, out float f, out string? problem) ? f : throw new WireException($"field \"{name}\": {problem}");
