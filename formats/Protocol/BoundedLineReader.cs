@@ -76,11 +76,33 @@ public sealed class BoundedLineReader
     /// <exception cref="LineTooLongException">The line is longer than <see cref="MaxBytes"/>; the next call reads the line after it.</exception>
     public ValueTask<string?> ReadLineAsync() => Read(synchronous: false, null);
 
-    private async ValueTask<string?> Read(bool synchronous, Func<bool>? waitForInput)
+    /// <summary>Reads the next line synchronously as its UTF-8 bytes, as they came (invalid UTF-8 included, the line end and a <c>\r</c> before it dropped).</summary>
+    /// <returns>The line's bytes, valid until the next read; null at end of input.</returns>
+    /// <exception cref="LineTooLongException">The line is longer than <see cref="MaxBytes"/>; the next call reads the line after it.</exception>
+    /// <remarks>How <c>serve</c> reads its requests (issue 26): a valid UTF-8 line is parsed from these bytes, with no
+    /// string in between.</remarks>
+    public ReadOnlyMemory<byte>? ReadLineUtf8()
+    {
+        var pending = ReadRaw(synchronous: true, null);
+        Debug.Assert(pending.IsCompleted, "a synchronous read completes before it returns");
+        if (!pending.GetAwaiter().GetResult())
+        {
+            return null;
+        }
+
+        var bytes = line.GetBuffer().AsMemory(0, (int)line.Length);
+        return bytes.Length > 0 && bytes.Span[^1] == (byte)'\r' ? bytes[..^1] : bytes;
+    }
+
+    private async ValueTask<string?> Read(bool synchronous, Func<bool>? waitForInput) =>
+        await ReadRaw(synchronous, waitForInput).ConfigureAwait(false) ? Text() : null;
+
+    // Reads the next line into `line`; false at end of input with nothing read.
+    private async ValueTask<bool> ReadRaw(bool synchronous, Func<bool>? waitForInput)
     {
         if (skipping && !await SkipRestAsync(synchronous, waitForInput).ConfigureAwait(false))
         {
-            return null;
+            return false;
         }
 
         if (!resuming)
@@ -93,7 +115,7 @@ public sealed class BoundedLineReader
         {
             if (start == end && !await FillAsync(synchronous, waitForInput).ConfigureAwait(false))
             {
-                return line.Length == 0 ? null : Text();
+                return line.Length != 0;
             }
 
             int newline = Array.IndexOf(buffer, (byte)'\n', start, end - start);
@@ -113,7 +135,7 @@ public sealed class BoundedLineReader
             if (newline >= 0)
             {
                 start = newline + 1;
-                return Text();
+                return true;
             }
 
             start = end;

@@ -10,8 +10,10 @@ namespace AcPhys.Fuzz.Targets;
 
 /// <summary>
 /// The <c>serve-request</c> parser target: bytes → up to <see cref="MaxLines"/> request lines → a fresh
-/// <see cref="ProtocolServer"/> over the reference core (<see cref="ProtocolServer.AnswerChecked"/>), as
-/// <c>acphys serve</c> reads them. A bad request must be answered with <c>{"error": ...}</c>; any exception that
+/// <see cref="ProtocolServer"/> over the reference core (<see cref="ProtocolServer.AnswerChecked(string)"/>), as
+/// <c>acphys serve</c> reads them; a second server is fed each line's bytes
+/// (<see cref="ProtocolServer.AnswerChecked(System.ReadOnlyMemory{byte})"/>, how serve parses a valid UTF-8 line) and must
+/// answer alike. A bad request must be answered with <c>{"error": ...}</c>; any exception that
 /// escapes is a bug (the server would answer "internal error"), and so is an answer that is not one JSON object.
 /// Several lines let a campaign reach <c>load_scene</c> followed by <c>find_cell</c> on the loaded scene, and the
 /// pipelined forms (docs/protocol.md, "Pipelining"): a load naming its own <c>scene_id</c>, the same id loaded twice,
@@ -57,14 +59,27 @@ public sealed class ServeRequestTarget : FuzzTarget
         return data =>
         {
             var server = new ProtocolServer(ReferenceAdapter.Instance);
-            foreach (string line in Encoding.UTF8.GetString(data).Split('\n').Take(MaxLines))
+            var bytesServer = new ProtocolServer(ReferenceAdapter.Instance); // fed the same lines as bytes, as serve reads them
+            byte[] all = data.ToArray();
+            int from = 0;
+            for (int n = 0; n < MaxLines && from <= all.Length; n++)
             {
+                int end = Array.IndexOf(all, (byte)'\n', from);
+                var raw = all.AsMemory(from, (end < 0 ? all.Length : end) - from);
+                from = end < 0 ? all.Length + 1 : end + 1;
+                string line = Encoding.UTF8.GetString(raw.Span);
                 if (line.Length == 0)
                 {
                     continue; // serve skips empty lines
                 }
 
                 string answer = server.AnswerChecked(line);
+                string fromBytes = bytesServer.AnswerChecked(raw);
+                if (fromBytes != answer)
+                {
+                    throw new InvalidOperationException($"serve-request: the request's bytes were answered {Wire.Brief(fromBytes, 200)}, its text {Wire.Brief(answer, 200)}");
+                }
+
                 try
                 {
                     Wire.Parse(answer).Dispose();
