@@ -62,13 +62,17 @@ public static class DatSceneWriter
         foreach (var cell in scene.Cells)
         {
             Require(cell.Portals.Count <= byte.MaxValue, $"cell {cell.Id} has {cell.Portals.Count} portals; an EnvCell holds at most 255");
-            string key = Protocol.WireProfile.Time("dat write: GeometryKey", () => CellStructBuilder.GeometryKey(cell));
+            long t = Protocol.WireProfile.Start(); // no closure per cell (issue 26)
+            string key = CellStructBuilder.GeometryKey(cell);
+            Protocol.WireProfile.Stop("dat write: GeometryKey", t);
             if (!keys.TryGetValue(key, out ushort index))
             {
                 Require(structs.Count <= ushort.MaxValue, "more than 65536 distinct cell geometries");
                 index = (ushort)structs.Count;
                 keys.Add(key, index);
-                structs.Add(Protocol.WireProfile.Time("dat write: CellStructBuilder.Build", () => CellStructBuilder.Build(index, cell)));
+                t = Protocol.WireProfile.Start();
+                structs.Add(CellStructBuilder.Build(index, cell));
+                Protocol.WireProfile.Stop("dat write: CellStructBuilder.Build", t);
             }
 
             var cs = structs[index];

@@ -166,25 +166,46 @@ internal sealed class LineProcess : IDisposable
     /// a pipelined run queues its requests and writes them in batches, and flushes before anything waits for an answer.
     /// The bytes are what the standard-input writer sent (UTF-8 without a byte order mark, lone surrogates as U+FFFD,
     /// the platform's line end).</remarks>
-    public void Queue(string request, string what)
+    public void Queue(string request, string what) => Queue(new RequestLine(request), what);
+
+    /// <summary>Queues one request line (its bytes copied as they are, or its text encoded); see <see cref="Queue(string, string)"/>.</summary>
+    /// <param name="request">The request line.</param>
+    /// <param name="what">What the request is, for messages (the op name).</param>
+    /// <exception cref="AdapterFailureException">The child failed earlier.</exception>
+    public void Queue(RequestLine request, string what)
     {
         if (dead)
         {
             throw new AdapterFailureException($"'{commandLine}' is no longer running (it failed earlier)");
         }
 
+        if (request.HasUtf8)
+        {
+            var bytes = request.Utf8;
+            int newline = Encoding.UTF8.GetByteCount(Environment.NewLine);
+            if (queued.Length - queuedBytes < bytes.Length + newline)
+            {
+                Array.Resize(ref queued, Math.Max(queued.Length * 2, queuedBytes + bytes.Length + newline));
+            }
+
+            bytes.CopyTo(queued.AsSpan(queuedBytes));
+            queuedBytes += bytes.Length;
+            queuedBytes += Encoding.UTF8.GetBytes(Environment.NewLine, queued.AsSpan(queuedBytes));
+            return;
+        }
+
         string end = Environment.NewLine;
-        int most = Encoding.UTF8.GetMaxByteCount(request.Length + end.Length);
+        int most = Encoding.UTF8.GetMaxByteCount(request.Text.Length + end.Length);
         if (queued.Length - queuedBytes < most)
         {
-            int need = Encoding.UTF8.GetByteCount(request) + Encoding.UTF8.GetByteCount(end);
+            int need = Encoding.UTF8.GetByteCount(request.Text) + Encoding.UTF8.GetByteCount(end);
             if (queued.Length - queuedBytes < need)
             {
                 Array.Resize(ref queued, Math.Max(queued.Length * 2, queuedBytes + need));
             }
         }
 
-        queuedBytes += Encoding.UTF8.GetBytes(request, queued.AsSpan(queuedBytes));
+        queuedBytes += Encoding.UTF8.GetBytes(request.Text, queued.AsSpan(queuedBytes));
         queuedBytes += Encoding.UTF8.GetBytes(end, queued.AsSpan(queuedBytes));
     }
 
@@ -222,12 +243,12 @@ internal sealed class LineProcess : IDisposable
 
     /// <summary>Waits for the next answer line. One thread at a time may receive; another may <see cref="Send"/> meanwhile.</summary>
     /// <param name="what">What the request answered is, for messages (the op name).</param>
-    /// <param name="request">The request line (or its first characters), for messages.</param>
+    /// <param name="request">The request line (a string, or a <see cref="RequestLine"/> spelt only for a message).</param>
     /// <param name="timeout">How long an answer may take (--timeout), for messages.</param>
     /// <param name="wait">How long to wait now (what is left of <paramref name="timeout"/> for a pipelined answer); null waits <paramref name="timeout"/>.</param>
     /// <returns>The answer line.</returns>
     /// <exception cref="AdapterFailureException">The child exited, closed its stdout or did not answer in time.</exception>
-    public string Receive(string what, string request, TimeSpan timeout, TimeSpan? wait = null)
+    public string Receive(string what, object request, TimeSpan timeout, TimeSpan? wait = null)
     {
         // Two readers at once would take each other's answers (and one found `pending` cleared by the other: a
         // NullReferenceException on the pipeline's reader thread). PipelineSession drains its reader before any live call.
@@ -246,7 +267,7 @@ internal sealed class LineProcess : IDisposable
         }
     }
 
-    private string ReceiveOne(string what, string request, TimeSpan timeout, TimeSpan? wait)
+    private string ReceiveOne(string what, object request, TimeSpan timeout, TimeSpan? wait)
     {
         if (dead)
         {
@@ -288,7 +309,7 @@ internal sealed class LineProcess : IDisposable
 
     // Linux and macOS: this thread waits for the child's output with poll(2) and reads it itself (issue 26: the
     // asynchronous read cost a pool thread's hand-off and a sched_yield spin per answer — 18 % of a served gate's samples).
-    private string ReceiveSynchronously(BoundedLineReader reader, string what, string request, TimeSpan timeout, TimeSpan? wait)
+    private string ReceiveSynchronously(BoundedLineReader reader, string what, object request, TimeSpan timeout, TimeSpan? wait)
     {
         var allowed = wait is { } w ? (w < TimeSpan.Zero ? TimeSpan.Zero : w) : timeout;
         deadline = allowed >= TimeSpan.FromDays(1) ? long.MaxValue : Stopwatch.GetTimestamp() + (long)(allowed.TotalSeconds * Stopwatch.Frequency);
@@ -334,7 +355,7 @@ internal sealed class LineProcess : IDisposable
         }
     }
 
-    private AdapterFailureException TimedOut(string what, string request, TimeSpan timeout)
+    private AdapterFailureException TimedOut(string what, object request, TimeSpan timeout)
     {
         dead = true;
         if (stdoutPipe is not null && ImplProcesses.ClosedStdout(tag, stdoutPipe, commandLine))
@@ -347,7 +368,7 @@ internal sealed class LineProcess : IDisposable
 
         Kill();
         return new AdapterFailureException(
-            string.Create(CultureInfo.InvariantCulture, $"'{commandLine}' did not answer '{what}' within {timeout.TotalSeconds:0.###} s (--timeout); it was killed. Request: {Wire.Brief(request, 200)}{TailText()}"));
+            string.Create(CultureInfo.InvariantCulture, $"'{commandLine}' did not answer '{what}' within {timeout.TotalSeconds:0.###} s (--timeout); it was killed. Request: {Wire.Brief(request.ToString() ?? string.Empty, 200)}{TailText()}"));
     }
 
     /// <inheritdoc/>

@@ -88,7 +88,7 @@ internal sealed class PipelineSession : IDisposable
     /// <returns>The answer.</returns>
     /// <remarks>A query that throws while its request is built takes no slot: the next query gets the slot it would have
     /// had, so every later answer stays paired with its own query in every pass.</remarks>
-    public T Query<T>(string name, Func<string> request, Func<string, string, T> interpret, Func<T>? guess, Func<T> live)
+    public T Query<T>(string name, Func<RequestLine> request, Func<string, string, T> interpret, Func<T>? guess, Func<T> live)
     {
         int at = next;
         if (at < frontier || at == divergedAt || at >= liveFrom)
@@ -111,7 +111,7 @@ internal sealed class PipelineSession : IDisposable
     /// <param name="loads">The id the request loads, or null.</param>
     /// <param name="unloads">The id the request unloads, or null.</param>
     /// <returns>The guess.</returns>
-    public T Transport<T>(string name, string request, Func<string, string, T> interpret, T guess, string? loads, string? unloads)
+    public T Transport<T>(string name, RequestLine request, Func<string, string, T> interpret, T guess, string? loads, string? unloads)
     {
         if (loads is not null)
         {
@@ -124,7 +124,7 @@ internal sealed class PipelineSession : IDisposable
         int owner = building >= 0 ? building : next;
         Send(new Sent(owner, name, request, true, line =>
         {
-            bool same = ExpectedAnswer.Is(line, guess) || SameAnswer.Of(interpret(request, line), guess);
+            bool same = ExpectedAnswer.Is(line, guess) || SameAnswer.Of(interpret(request.Text, line), guess);
             if (same && unloads is not null)
             {
                 lock (sync)
@@ -209,12 +209,12 @@ internal sealed class PipelineSession : IDisposable
     }
 
     // The request is built (its scene loads streamed, owned by the slot to come) before the slot is taken.
-    private T Speculate<T>(int at, string name, Func<string> request, Func<string, string, T> interpret, Func<T>? guess)
+    private T Speculate<T>(int at, string name, Func<RequestLine> request, Func<string, string, T> interpret, Func<T>? guess)
     {
         int outer = building;
         building = at;
         Streaming = true;
-        string line;
+        RequestLine line;
         try
         {
             line = request();
@@ -245,7 +245,7 @@ internal sealed class PipelineSession : IDisposable
 
         if (guessed)
         {
-            Send(new Sent(at, name, line, false, answer => ExpectedAnswer.Is(answer, value) || SameAnswer.Of(interpret(line, answer), value)));
+            Send(new Sent(at, name, line, false, answer => ExpectedAnswer.Is(answer, value) || SameAnswer.Of(interpret(line.Text, answer), value)));
             return value;
         }
 
@@ -270,8 +270,8 @@ internal sealed class PipelineSession : IDisposable
             throw (Exception?)failure ?? new InvalidOperationException("speculative pass abandoned after a difference");
         }
 
-        awaited[at] = (line, received);
-        return interpret(line, received);
+        awaited[at] = (line.Text, received);
+        return interpret(line.Text, received);
     }
 
     // A query before the frontier: its answer is known (the child's answer equalled the guess, or was kept).
@@ -332,6 +332,7 @@ internal sealed class PipelineSession : IDisposable
         try
         {
             child.Queue(sent.Request, sent.Name);
+            sent.Request.Written();
         }
         catch (AdapterFailureException e)
         {
@@ -479,7 +480,7 @@ internal sealed class PipelineSession : IDisposable
 
                 if (!same)
                 {
-                    Diverge(sent.Query, sent.IsTransport ? null : sent.Request, sent.IsTransport ? null : line, null);
+                    Diverge(sent.Query, sent.IsTransport ? null : sent.Request.Text, sent.IsTransport ? null : line, null);
                 }
             }
             finally
@@ -490,7 +491,7 @@ internal sealed class PipelineSession : IDisposable
     }
 
     // A request in flight: what it is, when it was sent, and how its answer is compared.
-    private sealed record Sent(int Query, string Name, string Request, bool IsTransport, Func<string, bool> Matches)
+    private sealed record Sent(int Query, string Name, RequestLine Request, bool IsTransport, Func<string, bool> Matches)
     {
         private volatile bool handed;
 

@@ -367,7 +367,7 @@ public sealed class ProcessAdapter : ICellPhysics, IDisposable
                 WalkWire.WriteFields(w, walk);
             },
             a => LearnAll(WalkWire.ReadAnswer(a, walk.Queries), walk.Scene is not null),
-            r => ProjectAll(r.FindCellWalk(walk), walk.Scene is not null) is var g && g.Length == walk.Queries
+            r => ProjectAll(r.FindCellWalk(walk), walk.Scene is not null) is var g && g.Count == walk.Queries
                 ? g
                 : throw new InvalidOperationException("the reference answered the walk with another number of queries")); // no guess: asked and read as the child answers
     }
@@ -513,7 +513,7 @@ public sealed class ProcessAdapter : ICellPhysics, IDisposable
         }
 
         return session is { } s
-            ? s.Query(name, () => Request(name, fields), (request, answer) => Interpret(name, request, answer, read), () => WireProfile.Time("tool: guess (reference, incl. its scene build)", () => guess(guesser.Value)), () => Live(name, Request(name, fields), read))
+            ? s.Query(name, () => Streamed(name, fields), (request, answer) => Interpret(name, request, answer, read), () => WireProfile.Time("tool: guess (reference, incl. its scene build)", () => guess(guesser.Value)), () => Live(name, Request(name, fields), read))
             : Live(name, Request(name, fields), read);
     }
 
@@ -546,10 +546,9 @@ public sealed class ProcessAdapter : ICellPhysics, IDisposable
             throw new NotSupportedException($"{Name} does not offer load_scene");
         }
 
-        string request = Request(name, fields);
         return session is { Streaming: true } s
-            ? s.Transport(name, request, (r, answer) => Interpret(name, r, answer, read), guess, loads, unloads)
-            : Live(name, request, read);
+            ? s.Transport(name, Streamed(name, fields), (r, answer) => Interpret(name, r, answer, read), guess, loads, unloads)
+            : Live(name, Request(name, fields), read);
     }
 
     // Every request line, streamed or awaited; a world-frame child gets its points in world coordinates (WorldFrame).
@@ -567,6 +566,28 @@ public sealed class ProcessAdapter : ICellPhysics, IDisposable
         }
 
         return InWorldFrame ? WorldFrame.ToWorld(request) : request;
+    }
+
+    // A streamed request: its bytes as written (text only when quoted), or the converted text for a world-frame child.
+    private RequestLine Streamed(string name, Action<Utf8JsonWriter> fields)
+    {
+        if (InWorldFrame)
+        {
+            return new RequestLine(Request(name, fields));
+        }
+
+        long t = WireProfile.Start();
+        var line = new RequestLine(Wire.LineUtf8(w =>
+        {
+            w.WriteString("op", name);
+            fields(w);
+        }));
+        if (WireProfile.On)
+        {
+            WireProfile.Stop("tool: request line (" + name + ", nested)", t);
+        }
+
+        return line;
     }
 
     private T Live<T>(string name, string request, Func<JsonElement, T> read)
@@ -616,7 +637,21 @@ public sealed class ProcessAdapter : ICellPhysics, IDisposable
 
     private FindCellResult Project(FindCellResult guess, bool scene) => reported[scene ? 1 : 0].Project(guess);
 
-    private FindCellResult[] ProjectAll(IReadOnlyList<FindCellResult> guesses, bool scene) => [.. guesses.Select(g => Project(g, scene))];
+    private IReadOnlyList<FindCellResult> ProjectAll(IReadOnlyList<FindCellResult> guesses, bool scene)
+    {
+        if (reported[scene ? 1 : 0].ReportsAll)
+        {
+            return guesses; // every optional field reported: the guesses as they are (issue 26: a copy per step cost the main thread)
+        }
+
+        var projected = new FindCellResult[guesses.Count];
+        for (int i = 0; i < projected.Length; i++)
+        {
+            projected[i] = Project(guesses[i], scene);
+        }
+
+        return projected;
+    }
 
     // Which optional fields a child's find_cell answers carry: unknown until its first answer (a guess cannot be made
     // before, so that query is asked and awaited), then fixed.
@@ -627,11 +662,14 @@ public sealed class ProcessAdapter : ICellPhysics, IDisposable
         public void Learn(FindCellResult answer) =>
             Interlocked.CompareExchange(ref state, (answer.Loaded is null ? 0 : 1) | (answer.HitsInteriorCell is null ? 0 : 2), -1);
 
+        public bool ReportsAll => Volatile.Read(ref state) == 3;
+
         public FindCellResult Project(FindCellResult guess)
         {
             int known = Volatile.Read(ref state);
             return known < 0
                 ? throw new InvalidOperationException("the implementation's optional find_cell fields are not known yet")
+                : known == 3 ? guess
                 : guess with { Loaded = (known & 1) != 0 ? guess.Loaded : null, HitsInteriorCell = (known & 2) != 0 ? guess.HitsInteriorCell : null };
         }
     }

@@ -36,8 +36,8 @@ public static class WalkWire
         foreach (var d in walk.Steps)
         {
             w.WriteStartObject();
-            Wire.WriteFloat(w, "x", d.X);
-            Wire.WriteFloat(w, "y", d.Y);
+            Wire.WriteFloat(w, "x"u8, d.X);
+            Wire.WriteFloat(w, "y"u8, d.Y);
             w.WriteEndObject();
         }
 

@@ -41,6 +41,22 @@ public static class Wire
         }
     }
 
+    /// <summary>Builds one message line as its UTF-8 bytes (see <see cref="Line"/>: the same text).</summary>
+    /// <param name="fields">Writes the object's properties.</param>
+    /// <returns>The compact JSON text's bytes, no line end.</returns>
+    public static byte[] LineUtf8(Action<Utf8JsonWriter> fields)
+    {
+        var line = LineWriter.Rent();
+        try
+        {
+            return line.Write(fields).ToArray();
+        }
+        finally
+        {
+            line.Return();
+        }
+    }
+
     /// <summary>Whether <paramref name="text"/> is exactly the line <paramref name="fields"/> builds (see <see cref="Line"/>), without building a string.</summary>
     /// <param name="text">The text.</param>
     /// <param name="fields">Writes the object's properties.</param>
@@ -183,7 +199,17 @@ public static class Wire
         WriteFloatValue(w, v);
     }
 
-    /// <summary>Writes a float32 value (see <see cref="WriteFloat"/>).</summary>
+    /// <summary>Writes a float32 field named by its UTF-8 bytes (a literal such as <c>"x"u8</c>: no name transcoded per field).</summary>
+    /// <param name="w">The writer.</param>
+    /// <param name="name">The property name, UTF-8.</param>
+    /// <param name="v">The value.</param>
+    public static void WriteFloat(Utf8JsonWriter w, ReadOnlySpan<byte> name, float v)
+    {
+        w.WritePropertyName(name);
+        WriteFloatValue(w, v);
+    }
+
+    /// <summary>Writes a float32 value (see <see cref="WriteFloat(Utf8JsonWriter, string, float)"/>).</summary>
     /// <param name="w">The writer.</param>
     /// <param name="v">The value.</param>
     public static void WriteFloatValue(Utf8JsonWriter w, float v)
@@ -332,13 +358,14 @@ public static class Wire
     public static void WriteSpheres(Utf8JsonWriter w, string name, IReadOnlyList<Sphere> spheres)
     {
         w.WriteStartArray(name);
-        foreach (var s in spheres)
+        for (int i = 0; i < spheres.Count; i++)
         {
+            var s = spheres[i];
             w.WriteStartObject();
-            WriteFloat(w, "x", s.Center.X);
-            WriteFloat(w, "y", s.Center.Y);
-            WriteFloat(w, "z", s.Center.Z);
-            WriteFloat(w, "r", s.Radius);
+            WriteFloat(w, "x"u8, s.Center.X);
+            WriteFloat(w, "y"u8, s.Center.Y);
+            WriteFloat(w, "z"u8, s.Center.Z);
+            WriteFloat(w, "r"u8, s.Radius);
             w.WriteEndObject();
         }
 
@@ -352,9 +379,9 @@ public static class Wire
     public static void WriteVector(Utf8JsonWriter w, string name, Vector3 v)
     {
         w.WriteStartObject(name);
-        WriteFloat(w, "x", v.X);
-        WriteFloat(w, "y", v.Y);
-        WriteFloat(w, "z", v.Z);
+        WriteFloat(w, "x"u8, v.X);
+        WriteFloat(w, "y"u8, v.Y);
+        WriteFloat(w, "z"u8, v.Z);
         w.WriteEndObject();
     }
 

@@ -6,8 +6,9 @@ using Xunit.Abstractions;
 namespace AcPhys.Props.Corpus;
 
 /// <summary>
-/// Parse once (issue #26): <see cref="Wire.Parse"/> reads a line in one pass, yet accepts and refuses exactly what the
-/// step-by-step <see cref="Wire.ParseChecked"/> does (JSON, an object, readable text, distinct keys), with the same words.
+/// Parse once (issue #26): <see cref="Wire.Parse(string)"/> reads a line in one pass, yet accepts and refuses exactly what the
+/// step-by-step <see cref="Wire.ParseChecked"/> does (JSON, an object, readable text, distinct keys), with the same words;
+/// and <see cref="Wire.Parse(System.ReadOnlyMemory{byte})"/> (how serve reads a valid UTF-8 request) does the same from the line's bytes.
 /// </summary>
 public sealed class WireParseOnce(ITestOutputHelper output)
 {
@@ -29,6 +30,10 @@ public sealed class WireParseOnce(ITestOutputHelper output)
             string fast = Outcome(() => Wire.Parse(line));
             string slow = Outcome(() => Wire.ParseChecked(line));
             Assert.True(fast == slow, $"seed {Seed}, line {i}: Wire.Parse gave {fast}, the step-by-step checks {slow}. Replay: Wire.Parse({JsonSerializer.Serialize(line)})");
+            byte[] utf8 = Encoding.UTF8.GetBytes(line);
+            bool fromWire = Encoding.UTF8.GetString(utf8) == line; // a line with a lone surrogate char never comes off the wire
+            string bytes = fromWire ? Outcome(() => Wire.Parse(utf8)) : fast;
+            Assert.True(bytes == fast, $"seed {Seed}, line {i}: Wire.Parse of the line's bytes gave {bytes}, of its text {fast}. Replay: Wire.Parse(UTF-8 of {JsonSerializer.Serialize(line)})");
             if (fast.StartsWith("accepted", StringComparison.Ordinal))
             {
                 accepted++;

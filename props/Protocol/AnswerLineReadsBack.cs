@@ -70,6 +70,26 @@ public sealed class AnswerLineReadsBack
                 && Same(ExpectedAnswer.Line(id), a => Wire.ReadString(a, "scene_id"), id);
         });
 
+    [CiProperty(MaxTest = 3000, DisplayName = "ANSWER-LINE-READS-BACK: the character matcher accepts an answer exactly when it is the guess's written line (pairs of find_cell answers and walks, and one-character edits)")]
+    public Property MatcherIsTheWrittenLine() =>
+        Prop.ForAll(Gen.Zip(Gen.Zip(FindCells, FindCells), Gen.Zip(Gen.Choose(0, 1000), Gen.Elements('0', 'F', 'f', '"', ',', 'x', ' '))).ToArbitrary(), t =>
+        {
+            var ((a, b), (at, c)) = t;
+            string la = ExpectedAnswer.Line(a)!, lb = ExpectedAnswer.Line(b)!;
+            var edited = la.ToCharArray();
+            edited[at % edited.Length] = c;
+            string le = new(edited);
+            IReadOnlyList<FindCellResult> walk = [a, b], other = [b, a];
+            string lw = ExpectedAnswer.Line(walk)!, lo = ExpectedAnswer.Line(other)!;
+            return (ExpectedAnswer.Is(la, a) && ExpectedAnswer.Is(lb, b) && ExpectedAnswer.Is(lw, walk)
+                    && ExpectedAnswer.Is(lb, a) == (lb == la)
+                    && ExpectedAnswer.Is(le, a) == (le == la)
+                    && ExpectedAnswer.Is(lo, walk) == (lo == lw)
+                    && !ExpectedAnswer.Is(la + " ", a) && !ExpectedAnswer.Is(la[..^1], a))
+                .Classify(lb == la, "same answer drawn twice")
+                .Classify(le == la, "edit left the line as it was");
+        });
+
     [Fact(DisplayName = "ANSWER-LINE-READS-BACK: a find_cell guess whose loaded is not parallel to its cells gets no expected line (the reader refuses that answer)")]
     public void UnparallelLoadedHasNoLine()
     {
