@@ -300,19 +300,8 @@ public static class DatManifestJson
             throw new DatFormatException($"{source}: {RecordPath(index)}.{name}: missing");
         }
 
-        if (e.ValueKind != JsonValueKind.String)
-        {
-            throw new DatFormatException($"{source}: {RecordPath(index)}.{name}: expected a string");
-        }
-
-        try
-        {
-            return e.GetString()!;
-        }
-        catch (InvalidOperationException)
-        {
-            throw new DatFormatException($"{source}: {RecordPath(index)}.{name}: not valid text (invalid UTF-8 or a lone surrogate)");
-        }
+        // A readable string at once; anything else is read again by Text, with its path, for the message.
+        return e.ValueKind == JsonValueKind.String && ValidText(e) is { } text ? text : Text(e, $"{RecordPath(index)}.{name}", source);
     }
 
     private static string RecordPath(int index) => string.Create(CultureInfo.InvariantCulture, $"$.records[{index}]");

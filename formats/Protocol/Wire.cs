@@ -87,58 +87,38 @@ public static class Wire
     /// Only a line that fails (or may hold a surrogate escape) is read again by <see cref="ParseChecked"/>, the checks
     /// one by one, so every refusal keeps its order and words.
     /// </remarks>
-    public static JsonDocument Parse(string line)
-    {
-        if (!Corpus.JsonStrings.MayHoldSurrogateEscape(line.AsSpan()))
-        {
-            JsonDocument? doc = null;
-            try
-            {
-                doc = JsonDocument.Parse(line, StrictOptions);
-            }
-            catch (JsonException)
-            {
-                // Not JSON, or a duplicate key: worded below.
-            }
-
-            if (doc is not null && doc.RootElement.ValueKind == JsonValueKind.Object && Corpus.JsonStrings.FirstUnreadable(doc.RootElement, "$") is null)
-            {
-                return doc;
-            }
-
-            doc?.Dispose();
-        }
-
-        return ParseChecked(line);
-    }
+    public static JsonDocument Parse(string line) =>
+        (Corpus.JsonStrings.MayHoldSurrogateEscape(line.AsSpan()) ? null : OnePass(() => JsonDocument.Parse(line, StrictOptions)))
+        ?? ParseChecked(line);
 
     /// <summary>Parses one message line given as valid UTF-8, exactly as <see cref="Parse(string)"/> parses its text.</summary>
     /// <param name="line">The line's bytes (valid UTF-8; they must stay unchanged while the document is used).</param>
     /// <returns>The parsed document (dispose it).</returns>
     /// <exception cref="WireException">As <see cref="Parse(string)"/>.</exception>
-    public static JsonDocument Parse(ReadOnlyMemory<byte> line)
+    public static JsonDocument Parse(ReadOnlyMemory<byte> line) =>
+        (Corpus.JsonStrings.MayHoldSurrogateEscape(line.Span) ? null : OnePass(() => JsonDocument.Parse(line, StrictOptions)))
+        ?? ParseChecked(Encoding.UTF8.GetString(line.Span));
+
+    // The one pass: the strict parse, an object, readable text; null sends the line to ParseChecked for the words.
+    private static JsonDocument? OnePass(Func<JsonDocument> parse)
     {
-        if (!Corpus.JsonStrings.MayHoldSurrogateEscape(line.Span))
+        JsonDocument doc;
+        try
         {
-            JsonDocument? doc = null;
-            try
-            {
-                doc = JsonDocument.Parse(line, StrictOptions);
-            }
-            catch (JsonException)
-            {
-                // Not JSON, or a duplicate key: worded below.
-            }
-
-            if (doc is not null && doc.RootElement.ValueKind == JsonValueKind.Object && Corpus.JsonStrings.FirstUnreadable(doc.RootElement, "$") is null)
-            {
-                return doc;
-            }
-
-            doc?.Dispose();
+            doc = parse();
+        }
+        catch (JsonException)
+        {
+            return null; // not JSON, or a duplicate key: worded by ParseChecked
         }
 
-        return ParseChecked(Encoding.UTF8.GetString(line.Span));
+        if (doc.RootElement.ValueKind == JsonValueKind.Object && Corpus.JsonStrings.FirstUnreadable(doc.RootElement, "$") is null)
+        {
+            return doc;
+        }
+
+        doc.Dispose();
+        return null;
     }
 
     /// <summary>Parses one message line and checks it step by step: JSON, an object, readable text, distinct keys.</summary>
