@@ -126,20 +126,8 @@ public sealed class ByteReader(byte[] data, string kind, uint id, bool named = t
     public Vector3 Vec(string? field)
     {
         int at = Position;
-        if (data.Length - at >= 12)
-        {
-            // All three there: one read (a short record is refused component by component below, as before).
-            var bytes = new ReadOnlySpan<byte>(data, at, 12);
-            var whole = new Vector3(
-                BinaryPrimitives.ReadSingleLittleEndian(bytes),
-                BinaryPrimitives.ReadSingleLittleEndian(bytes[4..]),
-                BinaryPrimitives.ReadSingleLittleEndian(bytes[8..]));
-            Position = at + 12;
-            Require(float.IsFinite(whole.X) && float.IsFinite(whole.Y) && float.IsFinite(whole.Z), field, at, "non-finite value");
-            return whole;
-        }
-
-        var v = new Vector3(F32(field), F32(field), F32(field));
+        // All three there: one read (a short record is refused component by component, each where it ends).
+        var v = data.Length - at >= 12 ? Floats3(Take(12, field)) : new Vector3(F32(field), F32(field), F32(field));
         Require(float.IsFinite(v.X) && float.IsFinite(v.Y) && float.IsFinite(v.Z), field, at, "non-finite value");
         return v;
     }
@@ -215,6 +203,11 @@ public sealed class ByteReader(byte[] data, string kind, uint id, bool named = t
 
     // A member's path below a field, spelled only when fields are named.
     private string? Sub(string? field, string member) => named ? field + member : null;
+
+    private static Vector3 Floats3(ReadOnlySpan<byte> bytes) => new(
+        BinaryPrimitives.ReadSingleLittleEndian(bytes),
+        BinaryPrimitives.ReadSingleLittleEndian(bytes[4..]),
+        BinaryPrimitives.ReadSingleLittleEndian(bytes[8..]));
 
     // The hot path of every field (issue 26): one comparison; the refusal is built out of line.
     private ReadOnlySpan<byte> Take(int n, string? field)

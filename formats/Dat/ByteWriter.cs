@@ -8,11 +8,7 @@ namespace AcPhys.Spec.Dat;
 /// <summary>Little-endian record writer; <see cref="Align"/> pads from the record's first byte (dat-records.md, ALIGN).</summary>
 public sealed class ByteWriter
 {
-    private readonly ArrayBufferWriter<byte> buffer;
-
-    /// <summary>Initializes a new instance of the <see cref="ByteWriter"/> class.</summary>
-    /// <param name="capacity">The bytes expected (a record larger grows the buffer).</param>
-    public ByteWriter(int capacity = 256) => buffer = new ArrayBufferWriter<byte>(capacity);
+    private readonly ArrayBufferWriter<byte> buffer = new(256);
 
     /// <summary>Gets the number of bytes written.</summary>
     public int Position => buffer.WrittenCount;

@@ -43,25 +43,24 @@ public static class LandblockRecord
         if (!named && r.NextAreZero((81 * 2) + 81))
         {
             // A flat block (every scene's): one scan of the terrain and height words instead of 162 checked reads; any
-            // other block is read field by field below, which refuses it with the same message (issue 26).
+            // other block is read field by field, which refuses it with the same message (issue 26).
             r.Skip((81 * 2) + 81);
-            r.Align("height");
-            r.End();
-            return hasObjects == 1;
         }
-
-        for (int i = 0; i < 81; i++)
+        else
         {
-            int at = r.Position;
-            ushort t = r.U16(r.Path($"terrain[{i}]"));
-            r.Require(t == 0, r.Path($"terrain[{i}]"), at, $"0x{t:X4}: scenes are flat (expected 0)");
-        }
+            for (int i = 0; i < 81; i++)
+            {
+                int at = r.Position;
+                ushort t = r.U16(r.Path($"terrain[{i}]"));
+                r.Require(t == 0, r.Path($"terrain[{i}]"), at, $"0x{t:X4}: scenes are flat (expected 0)");
+            }
 
-        for (int i = 0; i < 81; i++)
-        {
-            int at = r.Position;
-            byte h = r.U8(r.Path($"height[{i}]"));
-            r.Require(h == 0, r.Path($"height[{i}]"), at, $"{h}: scenes are flat (expected 0)");
+            for (int i = 0; i < 81; i++)
+            {
+                int at = r.Position;
+                byte h = r.U8(r.Path($"height[{i}]"));
+                r.Require(h == 0, r.Path($"height[{i}]"), at, $"{h}: scenes are flat (expected 0)");
+            }
         }
 
         r.Align("height");

@@ -48,12 +48,7 @@ public sealed class BoundedLineReader
     /// <remarks>Synchronous all the way down: the stream's own blocking read, no pool thread and no spin-wait per fill
     /// (a standard-input stream's ReadAsync runs its Read on a pool thread; waiting on that cost <c>serve</c> a
     /// sched_yield storm per request, issue 26).</remarks>
-    public string? ReadLine()
-    {
-        var pending = Read(synchronous: true, null);
-        Debug.Assert(pending.IsCompleted, "a synchronous read completes before it returns");
-        return pending.GetAwaiter().GetResult();
-    }
+    public string? ReadLine() => ReadSynchronously(null);
 
     /// <summary>Reads the next line synchronously, calling <paramref name="waitForInput"/> before each read of the stream that could block.</summary>
     /// <param name="waitForInput">Waits until the stream has input (or its end, or an error) so the read returns at once;
@@ -66,9 +61,7 @@ public sealed class BoundedLineReader
     public string? ReadLine(Func<bool> waitForInput)
     {
         ArgumentNullException.ThrowIfNull(waitForInput);
-        var pending = Read(synchronous: true, waitForInput);
-        Debug.Assert(pending.IsCompleted, "a synchronous read completes before it returns");
-        return pending.GetAwaiter().GetResult();
+        return ReadSynchronously(waitForInput);
     }
 
     /// <summary>Reads the next line without holding a thread while the peer is silent (the ProcessAdapter waits on it with a timeout).</summary>
@@ -83,9 +76,7 @@ public sealed class BoundedLineReader
     /// string in between.</remarks>
     public ReadOnlyMemory<byte>? ReadLineUtf8()
     {
-        var pending = ReadRaw(synchronous: true, null);
-        Debug.Assert(pending.IsCompleted, "a synchronous read completes before it returns");
-        if (!pending.GetAwaiter().GetResult())
+        if (!Completed(ReadRaw(synchronous: true, null)))
         {
             return null;
         }
@@ -93,6 +84,14 @@ public sealed class BoundedLineReader
         var bytes = line.GetBuffer().AsMemory(0, (int)line.Length);
         return bytes.Length > 0 && bytes.Span[^1] == (byte)'\r' ? bytes[..^1] : bytes;
     }
+
+    private static T Completed<T>(ValueTask<T> pending)
+    {
+        Debug.Assert(pending.IsCompleted, "a synchronous read completes before it returns");
+        return pending.GetAwaiter().GetResult();
+    }
+
+    private string? ReadSynchronously(Func<bool>? waitForInput) => Completed(Read(synchronous: true, waitForInput));
 
     private async ValueTask<string?> Read(bool synchronous, Func<bool>? waitForInput) =>
         await ReadRaw(synchronous, waitForInput).ConfigureAwait(false) ? Text() : null;

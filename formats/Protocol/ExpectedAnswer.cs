@@ -146,27 +146,14 @@ internal static class ExpectedAnswer
             at += ok ? expected.Length : 0;
         }
 
-        // A cell id as Wire writes it: "0x" and eight upper-case hex digits, quoted.
+        // A cell id as Wire writes it (Wire.CellText), quoted.
         private void Cell(CellId id)
         {
-            if (!ok || text.Length - at < 12 || text[at] != '"' || text[at + 1] != '0' || text[at + 2] != 'x' || text[at + 11] != '"')
-            {
-                ok = false;
-                return;
-            }
-
-            uint v = id.Value;
-            for (int k = 0; k < 8; k++)
-            {
-                int digit = (int)((v >> (28 - (4 * k))) & 0xF);
-                if (text[at + 3 + k] != (char)(digit < 10 ? '0' + digit : 'A' + digit - 10))
-                {
-                    ok = false;
-                    return;
-                }
-            }
-
-            at += 12;
+            Span<byte> cell = stackalloc byte[Wire.CellTextBytes];
+            var expected = Wire.CellText(id, cell);
+            ok = ok && text.Length - at >= expected.Length + 2 && text[at] == '"' && text[at + expected.Length + 1] == '"'
+                && System.Text.Ascii.Equals(expected, text.Slice(at + 1, expected.Length));
+            at += ok ? expected.Length + 2 : 0;
         }
     }
 }

@@ -179,33 +179,24 @@ internal sealed class LineProcess : IDisposable
             throw new AdapterFailureException($"'{commandLine}' is no longer running (it failed earlier)");
         }
 
+        string end = Environment.NewLine;
+        int need = (request.HasUtf8 ? request.Utf8.Length : Encoding.UTF8.GetByteCount(request.Text)) + Encoding.UTF8.GetByteCount(end);
+        if (queued.Length - queuedBytes < need)
+        {
+            Array.Resize(ref queued, Math.Max(queued.Length * 2, queuedBytes + need));
+        }
+
+        var free = queued.AsSpan(queuedBytes);
         if (request.HasUtf8)
         {
-            var bytes = request.Utf8;
-            int newline = Encoding.UTF8.GetByteCount(Environment.NewLine);
-            if (queued.Length - queuedBytes < bytes.Length + newline)
-            {
-                Array.Resize(ref queued, Math.Max(queued.Length * 2, queuedBytes + bytes.Length + newline));
-            }
-
-            bytes.CopyTo(queued.AsSpan(queuedBytes));
-            queuedBytes += bytes.Length;
-            queuedBytes += Encoding.UTF8.GetBytes(Environment.NewLine, queued.AsSpan(queuedBytes));
-            return;
+            request.Utf8.CopyTo(free);
+            queuedBytes += request.Utf8.Length;
         }
-
-        string end = Environment.NewLine;
-        int most = Encoding.UTF8.GetMaxByteCount(request.Text.Length + end.Length);
-        if (queued.Length - queuedBytes < most)
+        else
         {
-            int need = Encoding.UTF8.GetByteCount(request.Text) + Encoding.UTF8.GetByteCount(end);
-            if (queued.Length - queuedBytes < need)
-            {
-                Array.Resize(ref queued, Math.Max(queued.Length * 2, queuedBytes + need));
-            }
+            queuedBytes += Encoding.UTF8.GetBytes(request.Text, free);
         }
 
-        queuedBytes += Encoding.UTF8.GetBytes(request.Text, queued.AsSpan(queuedBytes));
         queuedBytes += Encoding.UTF8.GetBytes(end, queued.AsSpan(queuedBytes));
     }
 
@@ -226,11 +217,7 @@ internal sealed class LineProcess : IDisposable
             stdin!.Write(queued, 0, count);
             stdin.Flush();
         }
-        catch (IOException e)
-        {
-            throw Died($"could not send '{what}' (the pipe is closed)", e);
-        }
-        catch (ObjectDisposedException e)
+        catch (Exception e) when (e is IOException or ObjectDisposedException)
         {
             throw Died($"could not send '{what}' (the pipe is closed)", e);
         }

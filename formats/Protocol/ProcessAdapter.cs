@@ -554,8 +554,19 @@ public sealed class ProcessAdapter : ICellPhysics, IDisposable
     // Every request line, streamed or awaited; a world-frame child gets its points in world coordinates (WorldFrame).
     private string Request(string name, Action<Utf8JsonWriter> fields)
     {
+        string request = Written(name, fields, Wire.Line);
+        return InWorldFrame ? WorldFrame.ToWorld(request) : request;
+    }
+
+    // A streamed request: its bytes as written (text only when quoted), or the converted text for a world-frame child.
+    private RequestLine Streamed(string name, Action<Utf8JsonWriter> fields) =>
+        InWorldFrame ? new RequestLine(Request(name, fields)) : new RequestLine(Written(name, fields, Wire.LineUtf8));
+
+    // The op and its fields as one line (text or bytes), timed when profiling.
+    private static T Written<T>(string name, Action<Utf8JsonWriter> fields, Func<Action<Utf8JsonWriter>, T> line)
+    {
         long t = WireProfile.Start();
-        string request = Wire.Line(w =>
+        var written = line(w =>
         {
             w.WriteString("op", name);
             fields(w);
@@ -565,29 +576,7 @@ public sealed class ProcessAdapter : ICellPhysics, IDisposable
             WireProfile.Stop("tool: request line (" + name + ", nested)", t);
         }
 
-        return InWorldFrame ? WorldFrame.ToWorld(request) : request;
-    }
-
-    // A streamed request: its bytes as written (text only when quoted), or the converted text for a world-frame child.
-    private RequestLine Streamed(string name, Action<Utf8JsonWriter> fields)
-    {
-        if (InWorldFrame)
-        {
-            return new RequestLine(Request(name, fields));
-        }
-
-        long t = WireProfile.Start();
-        var line = new RequestLine(Wire.LineUtf8(w =>
-        {
-            w.WriteString("op", name);
-            fields(w);
-        }));
-        if (WireProfile.On)
-        {
-            WireProfile.Stop("tool: request line (" + name + ", nested)", t);
-        }
-
-        return line;
+        return written;
     }
 
     private T Live<T>(string name, string request, Func<JsonElement, T> read)

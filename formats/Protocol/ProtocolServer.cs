@@ -90,55 +90,23 @@ public sealed class ProtocolServer(ICellPhysics impl)
     /// <summary>Answers one request line.</summary>
     /// <param name="line">The request.</param>
     /// <returns>The answer line: the op's result or <c>{"error": ...}</c>.</returns>
-    public string Answer(string line)
-    {
-        try
-        {
-            return AnswerChecked(line);
-        }
-        catch (Exception e) when (e is not OutOfMemoryException)
-        {
-            // A bug of this server, not of the request: AnswerChecked lets it escape so the serve-request fuzz target sees it.
-            return Error($"internal error ({e.GetType().Name}): {Wire.Brief(e.Message, 200)}");
-        }
-    }
+    public string Answer(string line) => Guarded(() => AnswerChecked(line));
 
     /// <summary>Answers one request line given as its UTF-8 bytes, exactly as <see cref="Answer(string)"/> answers the line's text.</summary>
     /// <param name="line">The request's bytes (invalid UTF-8 is read as the text it decodes to, U+FFFD for each bad sequence).</param>
     /// <returns>The answer line.</returns>
     /// <remarks>Issue 26: a valid UTF-8 request is parsed from its bytes (a 13 KB scene load was decoded into a string and
     /// encoded back for the parser); any other, and every request of a world-frame server, goes through its text.</remarks>
-    public string Answer(ReadOnlyMemory<byte> line)
-    {
-        try
-        {
-            return AnswerChecked(line);
-        }
-        catch (Exception e) when (e is not OutOfMemoryException)
-        {
-            return Error($"internal error ({e.GetType().Name}): {Wire.Brief(e.Message, 200)}");
-        }
-    }
+    public string Answer(ReadOnlyMemory<byte> line) => Guarded(() => AnswerChecked(line));
 
     /// <summary>Answers one request line given as its UTF-8 bytes, as <see cref="AnswerChecked(string)"/> answers its text (a server bug escapes).</summary>
     /// <param name="line">The request's bytes.</param>
     /// <returns>The answer line.</returns>
     public string AnswerChecked(ReadOnlyMemory<byte> line)
     {
-        if (InWorldFrame || !System.Text.Unicode.Utf8.IsValid(line.Span))
-        {
-            return AnswerChecked(System.Text.Encoding.UTF8.GetString(line.Span));
-        }
-
-        try
-        {
-            using var doc = Wire.Parse(line);
-            return Dispatch(doc.RootElement);
-        }
-        catch (WireException e)
-        {
-            return Error("malformed request: " + e.Message);
-        }
+        return InWorldFrame || !System.Text.Unicode.Utf8.IsValid(line.Span)
+            ? AnswerChecked(System.Text.Encoding.UTF8.GetString(line.Span))
+            : Dispatched(() => Wire.Parse(line));
     }
 
     /// <summary>Answers one request line; a request it cannot serve gets an <c>{"error": ...}</c> answer.</summary>
@@ -149,11 +117,27 @@ public sealed class ProtocolServer(ICellPhysics impl)
     /// record) is answered as an error. Any exception that escapes is a bug of the server: <see cref="Answer(string)"/> turns it
     /// into an "internal error" answer, and the <c>serve-request</c> fuzz target reports it as a crash.
     /// </para></remarks>
-    public string AnswerChecked(string line)
+    public string AnswerChecked(string line) => Dispatched(() => Wire.Parse(InWorldFrame ? WorldFrame.ToBlock(line, FrameFault) : line));
+
+    // A bug of this server, not of the request: AnswerChecked lets it escape so the serve-request fuzz target sees it.
+    private static string Guarded(Func<string> answer)
     {
         try
         {
-            using var doc = Wire.Parse(InWorldFrame ? WorldFrame.ToBlock(line, FrameFault) : line);
+            return answer();
+        }
+        catch (Exception e) when (e is not OutOfMemoryException)
+        {
+            return Error($"internal error ({e.GetType().Name}): {Wire.Brief(e.Message, 200)}");
+        }
+    }
+
+    // The request parsed and dispatched; a request that is not protocol v1 (or a malformed field) gets an error answer.
+    private string Dispatched(Func<JsonDocument> parse)
+    {
+        try
+        {
+            using var doc = parse();
             return Dispatch(doc.RootElement);
         }
         catch (WireException e)

@@ -142,7 +142,7 @@ public static class WalkWire
     // The step's path is spelt only for a message (issue 26: per step it was a tenth of a walk request's reading).
     private static float ReadFloatAt(JsonElement obj, string name, int step)
     {
-        if (obj.TryGetProperty(name, out var v) && Values.Float32Json.TryRead(v, nonFiniteNames: true, out float f, out _))
+        if (Wire.TryReadFloat(obj, name, out float f))
         {
             return f; // well-formed: no exception frame, no message
         }

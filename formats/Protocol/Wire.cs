@@ -28,54 +28,21 @@ public static class Wire
     /// <remarks>The buffer and writer are the thread's own, reused (issue 26: a fresh growing buffer and writer per
     /// line was most of what both ends of a served gate allocated); a line built while another is being built (a
     /// request that loads its scene first) takes the next one.</remarks>
-    public static string Line(Action<Utf8JsonWriter> fields)
-    {
-        var line = LineWriter.Rent();
-        try
-        {
-            return Encoding.UTF8.GetString(line.Write(fields));
-        }
-        finally
-        {
-            line.Return();
-        }
-    }
+    public static string Line(Action<Utf8JsonWriter> fields) => Built(fields, 0, static (bytes, _) => Encoding.UTF8.GetString(bytes));
 
     /// <summary>Builds one message line as its UTF-8 bytes (see <see cref="Line"/>: the same text).</summary>
     /// <param name="fields">Writes the object's properties.</param>
     /// <returns>The compact JSON text's bytes, no line end.</returns>
-    public static byte[] LineUtf8(Action<Utf8JsonWriter> fields)
-    {
-        var line = LineWriter.Rent();
-        try
-        {
-            return line.Write(fields).ToArray();
-        }
-        finally
-        {
-            line.Return();
-        }
-    }
+    public static byte[] LineUtf8(Action<Utf8JsonWriter> fields) => Built(fields, 0, static (bytes, _) => bytes.ToArray());
 
     /// <summary>Whether <paramref name="text"/> is exactly the line <paramref name="fields"/> builds (see <see cref="Line"/>), without building a string.</summary>
     /// <param name="text">The text.</param>
     /// <param name="fields">Writes the object's properties.</param>
     /// <returns>True when equal.</returns>
-    public static bool LineIs(string text, Action<Utf8JsonWriter> fields)
-    {
-        var line = LineWriter.Rent();
-        try
-        {
-            var bytes = line.Write(fields);
-            return Ascii.IsValid(bytes)
-                ? bytes.Length == text.Length && Ascii.Equals(bytes, text)
-                : string.Equals(Encoding.UTF8.GetString(bytes), text, StringComparison.Ordinal);
-        }
-        finally
-        {
-            line.Return();
-        }
-    }
+    public static bool LineIs(string text, Action<Utf8JsonWriter> fields) => Built(fields, text, static (bytes, text) =>
+        Ascii.IsValid(bytes)
+            ? bytes.Length == text.Length && Ascii.Equals(bytes, text)
+            : string.Equals(Encoding.UTF8.GetString(bytes), text, StringComparison.Ordinal));
 
     /// <summary>Parses one message line into its root object.</summary>
     /// <param name="line">The line.</param>
@@ -519,11 +486,36 @@ public static class Wire
             ? id
             : throw new WireException($"field \"{name}\" must be a cell id string \"0xAABBCCCC\" (8 hex digits), got {Show(v)}");
 
+    /// <summary>Reads a float field that is there and well-formed, with no message built; false sends the caller to its checked read for the words.</summary>
+    /// <param name="obj">The object.</param>
+    /// <param name="name">The property name.</param>
+    /// <param name="value">The value.</param>
+    /// <returns>True when read.</returns>
+    internal static bool TryReadFloat(JsonElement obj, string name, out float value)
+    {
+        value = 0;
+        return obj.TryGetProperty(name, out var v) && Values.Float32Json.TryRead(v, nonFiniteNames: true, out value, out _);
+    }
+
     // A float field of list[index]: read at once when it is there and well-formed; otherwise read again as before, for the message.
     private static float FloatAt(JsonElement item, string field, string list, int index) =>
-        item.TryGetProperty(field, out var v) && Values.Float32Json.TryRead(v, nonFiniteNames: true, out float f, out _)
-            ? f
-            : FloatValue(Field(item, field), $"{list}[{index}].{field}");
+        TryReadFloat(item, field, out float f) ? f : FloatValue(Field(item, field), $"{list}[{index}].{field}");
+
+    // A line built in the thread's reusable writer and taken (decoded, copied, compared) before the writer is returned.
+    private delegate T FromLine<TState, T>(ReadOnlySpan<byte> line, TState state);
+
+    private static T Built<TState, T>(Action<Utf8JsonWriter> fields, TState state, FromLine<TState, T> take)
+    {
+        var line = LineWriter.Rent();
+        try
+        {
+            return take(line.Write(fields), state);
+        }
+        finally
+        {
+            line.Return();
+        }
+    }
 
     private static float FloatValue(JsonElement v, string name) =>
         Values.Float32Json.TryRead(v, nonFiniteNames: true, out float f, out string? problem) ? f : throw new WireException($"field \"{name}\": {problem}");
@@ -536,10 +528,14 @@ public static class Wire
         }
     }
 
-    private const int CellTextBytes = 10;
+    /// <summary>The UTF-8 bytes of a cell id's text, quotes not included.</summary>
+    internal const int CellTextBytes = 10;
 
-    // CellIdText.Format's text ("0x" and eight upper-case hex digits) as UTF-8, without a string per id (issue 26).
-    private static ReadOnlySpan<byte> CellText(CellId id, Span<byte> text)
+    /// <summary>Writes <see cref="CellIdText.Format"/>'s text ("0x" and eight upper-case hex digits) as UTF-8, without a string per id (issue 26).</summary>
+    /// <param name="id">The id.</param>
+    /// <param name="text">At least <see cref="CellTextBytes"/> bytes.</param>
+    /// <returns>The text, in <paramref name="text"/>.</returns>
+    internal static ReadOnlySpan<byte> CellText(CellId id, Span<byte> text)
     {
         text[0] = (byte)'0';
         text[1] = (byte)'x';

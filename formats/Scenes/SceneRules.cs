@@ -68,13 +68,8 @@ public sealed class SceneRules(string source)
     /// <param name="path">The JSON path of the value.</param>
     /// <param name="message">What is wrong (an interpolated string, formatted only when <paramref name="ok"/> is false: issue 26).</param>
     /// <exception cref="SceneFormatException">When <paramref name="ok"/> is false.</exception>
-    public void Require(bool ok, string path, [System.Runtime.CompilerServices.InterpolatedStringHandlerArgument("ok")] ref Dat.FailureText message)
-    {
-        if (!ok)
-        {
-            throw new SceneFormatException($"{source}: {path}: {message.Text()}");
-        }
-    }
+    public void Require(bool ok, string path, [System.Runtime.CompilerServices.InterpolatedStringHandlerArgument("ok")] ref Dat.FailureText message) =>
+        Require(ok, new At(path), ref message);
 
     /// <summary>A list holds at most <see cref="MaxItems"/> items.</summary>
     /// <param name="count">Its length.</param>
