@@ -8,6 +8,17 @@ namespace AcPhys.Spec.Scenes;
 /// <param name="Planes">Inner half-spaces (N·p + D ≥ 0 inside), or null when <paramref name="Box"/> is given.</param>
 public sealed record ScenePiece(Box? Box, IReadOnlyList<CellPlane>? Planes)
 {
+    // The core piece, built once (issue 26: a ConditionalWeakTable entry per piece cost every collection a dependent
+    // handle, on both ends of the wire). Not part of the value: equality, hashing and `with` see Box and Planes only.
+    private ConvexPiece? convex;
+
+    // `with` copies the value only: the copy's Box or Planes may differ, so its core piece is built anew.
+    private ScenePiece(ScenePiece original)
+    {
+        Box = original.Box;
+        Planes = original.Planes;
+    }
+
     /// <summary>Returns a box piece.</summary>
     /// <param name="min">Minimum corner.</param>
     /// <param name="max">Maximum corner.</param>
@@ -20,18 +31,25 @@ public sealed record ScenePiece(Box? Box, IReadOnlyList<CellPlane>? Planes)
     /// <returns>The piece.</returns>
     /// <remarks>Issue 26: a scene read from dat records built each piece three times (the reader's check, the scene
     /// rules' check, the query scene).</remarks>
-    public static ScenePiece OfChecked(IReadOnlyList<CellPlane> planes, ConvexPiece built)
-    {
-        var piece = new ScenePiece(null, planes);
-        Cache.AddOrUpdate(piece, built);
-        return piece;
-    }
+    public static ScenePiece OfChecked(IReadOnlyList<CellPlane> planes, ConvexPiece built) => new(null, planes) { convex = built };
 
-    /// <summary>Builds the core piece.</summary>
+    /// <summary>Returns a box piece whose core piece a reader has already built from the box's six planes.</summary>
+    /// <param name="min">Minimum corner.</param>
+    /// <param name="max">Maximum corner.</param>
+    /// <param name="built"><c>ConvexPiece.FromBox(min, max)</c>, or the piece of the same six planes in the same order, built by the caller.</param>
+    /// <returns>The piece.</returns>
+    public static ScenePiece OfCheckedBox(Vector3 min, Vector3 max, ConvexPiece built) => new(new Box(min, max), null) { convex = built };
+
+    /// <summary>Builds the core piece (once per piece).</summary>
     /// <returns>The convex piece.</returns>
-    public ConvexPiece ToConvex() => Cache.GetValue(this, p => p.Box is { } b ? ConvexPiece.FromBox(b.Min, b.Max) : new ConvexPiece(p.Planes!));
+    public ConvexPiece ToConvex() => convex ??= Box is { } b ? ConvexPiece.FromBox(b.Min, b.Max) : new ConvexPiece(Planes!);
 
-    private static readonly System.Runtime.CompilerServices.ConditionalWeakTable<ScenePiece, ConvexPiece> Cache = [];
+    /// <inheritdoc/>
+    public bool Equals(ScenePiece? other) =>
+        other is not null && EqualityComparer<Box?>.Default.Equals(Box, other.Box) && EqualityComparer<IReadOnlyList<CellPlane>?>.Default.Equals(Planes, other.Planes);
+
+    /// <inheritdoc/>
+    public override int GetHashCode() => HashCode.Combine(Box, Planes);
 }
 
 /// <summary>A portal of a scene cell: plane (cell-local), the cell behind (low word, 0xFFFF outside), PortalSide, and the other cell's portal index.</summary>

@@ -110,6 +110,7 @@ public sealed class ConvexPiece
         return true;
     }
 
+    // Loops, not LINQ: a closure per corner candidate was most of a scene read's time (issue 26); the same tests in the same order.
     private static List<Vector3> ComputeVertices(CellPlane[] planes)
     {
         var result = new List<Vector3>();
@@ -119,15 +120,12 @@ public sealed class ConvexPiece
             {
                 for (int k = j + 1; k < planes.Length; k++)
                 {
-                    if (!Intersect(planes[i], planes[j], planes[k], out var v) || !planes.All(p => p.Distance(v) >= -1e-3f))
+                    if (!Intersect(planes[i], planes[j], planes[k], out var v) || !InsideAll(planes, v) || Repeats(result, v))
                     {
                         continue;
                     }
 
-                    if (!result.Any(r => Vector3.DistanceSquared(r, v) < 1e-8f))
-                    {
-                        result.Add(v);
-                    }
+                    result.Add(v);
                 }
             }
         }
@@ -135,13 +133,39 @@ public sealed class ConvexPiece
         return result;
     }
 
+    // N·v + D ≥ −1e-3 for every plane (a NaN distance fails).
+    private static bool InsideAll(CellPlane[] planes, Vector3 v)
+    {
+        foreach (var p in planes)
+        {
+            if (!(p.Distance(v) >= -1e-3f))
+            {
+                return false;
+            }
+        }
+
+        return true;
+    }
+
+    private static bool Repeats(List<Vector3> corners, Vector3 v)
+    {
+        foreach (var r in corners)
+        {
+            if (Vector3.DistanceSquared(r, v) < 1e-8f)
+            {
+                return true;
+            }
+        }
+
+        return false;
+    }
+
     // Bounded iff no direction v has N·v ≥ 0 for every plane; the extreme rays of that cone are ±Nᵢ×Nⱼ or ±Nᵢ.
     private static bool Unbounded(CellPlane[] planes)
     {
-        bool Recedes(Vector3 v) => v.LengthSquared() > 1e-10f && planes.All(p => Vector3.Dot(p.Normal, Vector3.Normalize(v)) >= -1e-6f);
         for (int i = 0; i < planes.Length; i++)
         {
-            if (Recedes(planes[i].Normal) || Recedes(-planes[i].Normal))
+            if (Recedes(planes, planes[i].Normal) || Recedes(planes, -planes[i].Normal))
             {
                 return true;
             }
@@ -149,7 +173,7 @@ public sealed class ConvexPiece
             for (int j = i + 1; j < planes.Length; j++)
             {
                 var v = Vector3.Cross(planes[i].Normal, planes[j].Normal);
-                if (Recedes(v) || Recedes(-v))
+                if (Recedes(planes, v) || Recedes(planes, -v))
                 {
                     return true;
                 }
@@ -157,6 +181,26 @@ public sealed class ConvexPiece
         }
 
         return false;
+    }
+
+    // Whether the volume goes on for ever along v: v is not null and N·v̂ ≥ −1e-6 for every plane (a NaN fails).
+    private static bool Recedes(CellPlane[] planes, Vector3 v)
+    {
+        if (!(v.LengthSquared() > 1e-10f))
+        {
+            return false;
+        }
+
+        var unit = Vector3.Normalize(v);
+        foreach (var p in planes)
+        {
+            if (!(Vector3.Dot(p.Normal, unit) >= -1e-6f))
+            {
+                return false;
+            }
+        }
+
+        return true;
     }
 
     private static bool Intersect(CellPlane a, CellPlane b, CellPlane c, out Vector3 v)

@@ -1,4 +1,3 @@
-using System.Buffers;
 using System.Buffers.Binary;
 using System.Numerics;
 using AcPhys.Core;
@@ -8,30 +7,28 @@ namespace AcPhys.Spec.Dat;
 /// <summary>Little-endian record writer; <see cref="Align"/> pads from the record's first byte (dat-records.md, ALIGN).</summary>
 public sealed class ByteWriter
 {
-    private readonly ArrayBufferWriter<byte> buffer = new(256);
+    // A plain array that doubles when full (issue 26: an ArrayBufferWriter's span per value was a third of writing an Environment).
+    private byte[] buffer;
+    private int written;
+
+    /// <summary>Initializes a new instance.</summary>
+    /// <param name="capacity">The bytes to hold before the first growth.</param>
+    public ByteWriter(int capacity = 256) => buffer = new byte[Math.Max(16, capacity)];
 
     /// <summary>Gets the number of bytes written.</summary>
-    public int Position => buffer.WrittenCount;
+    public int Position => written;
 
     /// <summary>Returns the bytes.</summary>
     /// <returns>The record.</returns>
-    public byte[] ToArray() => buffer.WrittenSpan.ToArray();
+    public byte[] ToArray() => buffer.AsSpan(0, written).ToArray();
 
     /// <summary>Writes a byte.</summary>
     /// <param name="v">The value.</param>
-    public void U8(byte v)
-    {
-        buffer.GetSpan(1)[0] = v;
-        buffer.Advance(1);
-    }
+    public void U8(byte v) => Room(1)[0] = v;
 
     /// <summary>Writes a u16.</summary>
     /// <param name="v">The value.</param>
-    public void U16(ushort v)
-    {
-        BinaryPrimitives.WriteUInt16LittleEndian(buffer.GetSpan(2), v);
-        buffer.Advance(2);
-    }
+    public void U16(ushort v) => BinaryPrimitives.WriteUInt16LittleEndian(Room(2), v);
 
     /// <summary>Writes an i16.</summary>
     /// <param name="v">The value.</param>
@@ -39,11 +36,7 @@ public sealed class ByteWriter
 
     /// <summary>Writes a u32.</summary>
     /// <param name="v">The value.</param>
-    public void U32(uint v)
-    {
-        BinaryPrimitives.WriteUInt32LittleEndian(buffer.GetSpan(4), v);
-        buffer.Advance(4);
-    }
+    public void U32(uint v) => BinaryPrimitives.WriteUInt32LittleEndian(Room(4), v);
 
     /// <summary>Writes an i32.</summary>
     /// <param name="v">The value.</param>
@@ -97,5 +90,18 @@ public sealed class ByteWriter
         {
             U8(0);
         }
+    }
+
+    // The next `bytes` bytes, counted as written.
+    private Span<byte> Room(int bytes)
+    {
+        if (buffer.Length - written < bytes)
+        {
+            Array.Resize(ref buffer, Math.Max(buffer.Length * 2, written + bytes));
+        }
+
+        var room = buffer.AsSpan(written, bytes);
+        written += bytes;
+        return room;
     }
 }

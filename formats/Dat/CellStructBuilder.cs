@@ -15,39 +15,6 @@ public static class CellStructBuilder
     /// <summary>The dummy surface index every polygon uses (the EnvCell lists one surface).</summary>
     public const short Surface = 0;
 
-    /// <summary>Returns a key equal for cells whose records would be equal: every piece plane and portal plane, by bits.</summary>
-    /// <param name="cell">The cell.</param>
-    /// <returns>The key.</returns>
-    public static string GeometryKey(SceneCell cell)
-    {
-        // Counts before their items, so no two geometries share a key; each 32-bit value as two chars, unformatted.
-        var words = new List<uint>(64) { (uint)cell.Pieces.Count };
-        foreach (var piece in cell.Pieces)
-        {
-            var planes = piece.ToConvex().Planes;
-            words.Add((uint)planes.Count);
-            foreach (var p in planes)
-            {
-                Bits(words, p);
-            }
-        }
-
-        words.Add((uint)cell.Portals.Count);
-        foreach (var portal in cell.Portals)
-        {
-            Bits(words, PolygonPlane.Unit(portal.Plane));
-        }
-
-        return string.Create(words.Count * 2, words, static (chars, ws) =>
-        {
-            for (int i = 0; i < ws.Count; i++)
-            {
-                chars[2 * i] = (char)(ws[i] >> 16);
-                chars[(2 * i) + 1] = (char)(ws[i] & 0xFFFF);
-            }
-        });
-    }
-
     /// <summary>Builds the CellStruct; portal i's polygon id is <c>PortalPolygonIds[i]</c>.</summary>
     /// <param name="key">The CellStruct key.</param>
     /// <param name="cell">The cell.</param>
@@ -215,12 +182,4 @@ public static class CellStructBuilder
 
     private static DatPolygon Polygon(int id, short[] vertexIds) =>
         new(checked((ushort)id), 0, 1, Surface, Surface, vertexIds, new byte[vertexIds.Length], []);
-
-    private static void Bits(List<uint> words, CellPlane p)
-    {
-        words.Add(BitConverter.SingleToUInt32Bits(p.Normal.X));
-        words.Add(BitConverter.SingleToUInt32Bits(p.Normal.Y));
-        words.Add(BitConverter.SingleToUInt32Bits(p.Normal.Z));
-        words.Add(BitConverter.SingleToUInt32Bits(p.D));
-    }
 }

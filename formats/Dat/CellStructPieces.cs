@@ -70,6 +70,20 @@ public static class CellStructPieces
         return PolygonPlane.Of(points) ?? throw new DatFormatException($"{where}: polygon {polygonId} spans no area (no plane)");
     }
 
+    // Whether the planes are exactly those ConvexPiece.FromBox makes for the box, in its order.
+    private static bool AreBoxPlanes(CellPlane[] planes, Box box)
+    {
+        static bool Same(CellPlane p, Vector3 n, float d) =>
+            BitConverter.SingleToUInt32Bits(p.Normal.X) == BitConverter.SingleToUInt32Bits(n.X)
+            && BitConverter.SingleToUInt32Bits(p.Normal.Y) == BitConverter.SingleToUInt32Bits(n.Y)
+            && BitConverter.SingleToUInt32Bits(p.Normal.Z) == BitConverter.SingleToUInt32Bits(n.Z)
+            && BitConverter.SingleToUInt32Bits(p.D) == BitConverter.SingleToUInt32Bits(d);
+
+        return Same(planes[0], Vector3.UnitX, -box.Min.X) && Same(planes[1], -Vector3.UnitX, box.Max.X)
+            && Same(planes[2], Vector3.UnitY, -box.Min.Y) && Same(planes[3], -Vector3.UnitY, box.Max.Y)
+            && Same(planes[4], Vector3.UnitZ, -box.Min.Z) && Same(planes[5], -Vector3.UnitZ, box.Max.Z);
+    }
+
     private static void Collect(BspNode node, string where, List<ScenePiece> pieces)
     {
         var planes = new List<CellPlane>();
@@ -93,8 +107,12 @@ public static class CellStructPieces
             throw new DatFormatException($"{where}: the positive chain from byte {node.Offset} is no convex piece ({planes.Count} planes): {e.Message.Split(" (Parameter", 2)[0]}");
         }
 
+        // The piece checked here is the one queried: a box's too, when its six planes are FromBox's, bit for bit (a
+        // normal's zero may carry either sign and still read as a box; such a box's piece is built from the box).
         var piece = PieceOf(own);
-        pieces.Add(piece.Box is null ? ScenePiece.OfChecked(own, built) : piece); // the piece checked here is the one queried
+        pieces.Add(piece.Box is not { } box ? ScenePiece.OfChecked(own, built)
+            : AreBoxPlanes(own, box) ? ScenePiece.OfCheckedBox(box.Min, box.Max, built)
+            : piece);
         foreach (var c in chain)
         {
             if (c.Negative is { } neg)

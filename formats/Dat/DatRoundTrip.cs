@@ -12,13 +12,41 @@ namespace AcPhys.Spec.Dat;
 public static class DatRoundTrip
 {
     private static readonly ConditionalWeakTable<Scene, Scene> Cache = [];
-    private static readonly ConditionalWeakTable<Scene, DatExport> Exports = [];
+
+    // The last few exports, by scene instance: a scene's load and its read-back come close together, and writing again
+    // gives the same bytes. Not a ConditionalWeakTable (issue 26: one dependent handle per scene sent made every
+    // collection of the tool slower).
+    private static readonly (Scene? Scene, DatExport? Export)[] Recent = new (Scene?, DatExport?)[16];
+    private static int next;
 
     /// <summary>Returns the records a scene travels as (protocol v1 <c>load_scene</c> with <c>dat</c>), written once per scene instance.</summary>
     /// <param name="scene">A valid scene.</param>
     /// <returns>The export (manifest title "wire", source "load_scene").</returns>
     /// <exception cref="DatFormatException">The scene exceeds what the records hold.</exception>
-    public static DatExport Records(Scene scene) => Exports.GetValue(scene, s => Protocol.WireProfile.Time("tool: DatSceneWriter.Write", () => DatSceneWriter.Write(s, "wire", "load_scene")));
+    public static DatExport Records(Scene scene)
+    {
+        lock (Recent)
+        {
+            foreach (var (s, e) in Recent)
+            {
+                if (ReferenceEquals(s, scene))
+                {
+                    return e!;
+                }
+            }
+        }
+
+        long t = Protocol.WireProfile.Start();
+        var export = DatSceneWriter.Write(scene, "wire", "load_scene");
+        Protocol.WireProfile.Stop("tool: DatSceneWriter.Write", t);
+        lock (Recent)
+        {
+            Recent[next] = (scene, export);
+            next = (next + 1) % Recent.Length;
+        }
+
+        return export;
+    }
 
     /// <summary>Returns the scene as the records give it back.</summary>
     /// <param name="scene">A valid scene.</param>

@@ -55,7 +55,7 @@ public static class DatSceneWriter
             records.Add((new ManifestRecord(id, false, RecordType.LandblockInfo), new LandblockInfoRecord(id, numCells, buildings).Write()));
         }
 
-        var keys = new Dictionary<string, ushort>();
+        var keys = new Dictionary<CellGeometryKey, ushort>();
         var structs = new List<CellStructRecord>();
         var elsewhere = new List<(CellId, IReadOnlyList<CellId>)>();
         var cellRecords = new List<(ManifestRecord, byte[])>();
@@ -63,7 +63,7 @@ public static class DatSceneWriter
         {
             Require(cell.Portals.Count <= byte.MaxValue, $"cell {cell.Id} has {cell.Portals.Count} portals; an EnvCell holds at most 255");
             long t = Protocol.WireProfile.Start(); // no closure per cell (issue 26)
-            string key = CellStructBuilder.GeometryKey(cell);
+            var key = CellGeometryKey.Of(cell);
             Protocol.WireProfile.Stop("dat write: GeometryKey", t);
             if (!keys.TryGetValue(key, out ushort index))
             {

@@ -15,61 +15,67 @@ public static class EnvironmentCodec
     /// <returns>The bytes.</returns>
     public static byte[] Write(uint id, IReadOnlyList<CellStructRecord> structs)
     {
-        // Index loops throughout: a foreach over an IReadOnlyList allocates an enumerator per list, per vertex and polygon.
-        var w = new ByteWriter();
+        var w = new ByteWriter(2048 * structs.Count);
         w.U32(id);
         w.U32((uint)structs.Count);
         for (int k = 0; k < structs.Count; k++)
         {
-            var s = structs[k];
-            w.U32(s.Key);
-            w.U32((uint)s.Polygons.Count);
-            w.U32((uint)s.PhysicsPolygons.Count);
-            w.U32((uint)s.PortalPolygonIds.Count);
-            w.I32(1); // vertex type: must be 1
-            w.U32((uint)s.Vertices.Count);
-            for (int i = 0; i < s.Vertices.Count; i++)
-            {
-                var v = s.Vertices[i];
-                w.U16(v.Id);
-                w.U16((ushort)v.Uvs.Count);
-                w.Vec(v.Origin);
-                w.Vec(v.Normal);
-                for (int u = 0; u < v.Uvs.Count; u++)
-                {
-                    w.F32(v.Uvs[u].X);
-                    w.F32(v.Uvs[u].Y);
-                }
-            }
-
-            for (int i = 0; i < s.Polygons.Count; i++)
-            {
-                Polygon(w, s.Polygons[i]);
-            }
-
-            for (int i = 0; i < s.PortalPolygonIds.Count; i++)
-            {
-                w.U16(s.PortalPolygonIds[i]);
-            }
-
-            w.Align();
-            BspCodec.Write(w, s.CellBsp, BspTreeType.Cell);
-            for (int i = 0; i < s.PhysicsPolygons.Count; i++)
-            {
-                Polygon(w, s.PhysicsPolygons[i]);
-            }
-
-            BspCodec.Write(w, s.PhysicsBsp, BspTreeType.Physics);
-            w.U32(s.DrawingBsp is null ? 0u : 1u);
-            if (s.DrawingBsp is { } drawing)
-            {
-                BspCodec.Write(w, drawing, BspTreeType.Drawing);
-            }
-
-            w.Align();
+            w.U32(structs[k].Key);
+            WriteBody(w, structs[k]);
         }
 
         return w.ToArray();
+    }
+
+    // Everything after the key. The writer is 4-aligned here (record header, keys and bodies are multiples of 4), so
+    // the body's alignment padding does not depend on where it lands. Index loops throughout: a foreach over an
+    // IReadOnlyList allocates an enumerator per list, per vertex and polygon.
+    private static void WriteBody(ByteWriter w, CellStructRecord s)
+    {
+        w.U32((uint)s.Polygons.Count);
+        w.U32((uint)s.PhysicsPolygons.Count);
+        w.U32((uint)s.PortalPolygonIds.Count);
+        w.I32(1); // vertex type: must be 1
+        w.U32((uint)s.Vertices.Count);
+        for (int i = 0; i < s.Vertices.Count; i++)
+        {
+            var v = s.Vertices[i];
+            w.U16(v.Id);
+            w.U16((ushort)v.Uvs.Count);
+            w.Vec(v.Origin);
+            w.Vec(v.Normal);
+            for (int u = 0; u < v.Uvs.Count; u++)
+            {
+                w.F32(v.Uvs[u].X);
+                w.F32(v.Uvs[u].Y);
+            }
+        }
+
+        for (int i = 0; i < s.Polygons.Count; i++)
+        {
+            Polygon(w, s.Polygons[i]);
+        }
+
+        for (int i = 0; i < s.PortalPolygonIds.Count; i++)
+        {
+            w.U16(s.PortalPolygonIds[i]);
+        }
+
+        w.Align();
+        BspCodec.Write(w, s.CellBsp, BspTreeType.Cell);
+        for (int i = 0; i < s.PhysicsPolygons.Count; i++)
+        {
+            Polygon(w, s.PhysicsPolygons[i]);
+        }
+
+        BspCodec.Write(w, s.PhysicsBsp, BspTreeType.Physics);
+        w.U32(s.DrawingBsp is null ? 0u : 1u);
+        if (s.DrawingBsp is { } drawing)
+        {
+            BspCodec.Write(w, drawing, BspTreeType.Drawing);
+        }
+
+        w.Align();
     }
 
     /// <summary>Reads an Environment record strictly (duplicate keys, bad vertex types, unknown tags and trailing bytes refused).</summary>

@@ -74,9 +74,22 @@ public sealed class BoundedLineReader
     /// <exception cref="LineTooLongException">The line is longer than <see cref="MaxBytes"/>; the next call reads the line after it.</exception>
     /// <remarks>How <c>serve</c> reads its requests (issue 26): a valid UTF-8 line is parsed from these bytes, with no
     /// string in between.</remarks>
-    public ReadOnlyMemory<byte>? ReadLineUtf8()
+    public ReadOnlyMemory<byte>? ReadLineUtf8() => ReadUtf8(null);
+
+    /// <summary>Reads the next line as <see cref="ReadLineUtf8()"/> does, waiting for input with <paramref name="waitForInput"/> as <see cref="ReadLine(Func{bool})"/> does.</summary>
+    /// <param name="waitForInput">Waits until the stream has input, its end or an error; false gives up (a <see cref="TimeoutException"/>, and the next call goes on with the line held).</param>
+    /// <returns>The line's bytes, valid until the next read; null at end of input.</returns>
+    /// <exception cref="LineTooLongException">The line is longer than <see cref="MaxBytes"/>.</exception>
+    /// <exception cref="TimeoutException"><paramref name="waitForInput"/> gave up.</exception>
+    public ReadOnlyMemory<byte>? ReadLineUtf8(Func<bool> waitForInput)
     {
-        if (!Completed(ReadRaw(synchronous: true, null)))
+        ArgumentNullException.ThrowIfNull(waitForInput);
+        return ReadUtf8(waitForInput);
+    }
+
+    private ReadOnlyMemory<byte>? ReadUtf8(Func<bool>? waitForInput)
+    {
+        if (!Completed(ReadRaw(synchronous: true, waitForInput)))
         {
             return null;
         }

@@ -21,11 +21,11 @@ internal static class ExpectedAnswer
     /// guesses get no line.</remarks>
     public static string? Line(object? guess) => Fields(guess) is { } fields ? Wire.Line(fields) : null;
 
-    /// <summary>Whether <paramref name="answer"/> is the expected line of <paramref name="guess"/>.</summary>
-    /// <param name="answer">The child's answer line.</param>
+    /// <summary>Whether <paramref name="answer"/> is the expected line of <paramref name="guess"/>, byte for byte.</summary>
+    /// <param name="answer">The child's answer line, its UTF-8 bytes.</param>
     /// <param name="guess">The guess.</param>
-    /// <returns>True when the text is the same; false says nothing (compare by value).</returns>
-    public static bool Is(string answer, object? guess) => guess switch
+    /// <returns>True when the bytes are the same; false says nothing (compare by value).</returns>
+    public static bool Is(ReadOnlySpan<byte> answer, object? guess) => guess switch
     {
         // The two big shapes are matched character by character against the text Wire.WriteFindCell writes, with no
         // line written (issue 26: writing a walk's answer to compare it was half the reader thread's time).
@@ -67,9 +67,9 @@ internal static class ExpectedAnswer
 
     // A cursor over an answer line that consumes the expected text piece by piece; after the first difference every
     // step fails (Ok false), so a chain of steps needs no checks in between.
-    private ref struct Match(string text)
+    private ref struct Match(ReadOnlySpan<byte> text)
     {
-        private readonly ReadOnlySpan<char> text = text;
+        private readonly ReadOnlySpan<byte> text = text;
         private int at;
         private bool ok = true;
 
@@ -77,38 +77,38 @@ internal static class ExpectedAnswer
 
         public Match Walk(IReadOnlyList<FindCellResult> steps)
         {
-            Lit("{\"steps\":[");
+            Lit("{\"steps\":["u8);
             for (int i = 0; i < steps.Count && ok; i++)
             {
                 if (i > 0)
                 {
-                    Lit(",");
+                    Lit(","u8);
                 }
 
                 FindCellObject(steps[i]);
             }
 
-            Lit("]}");
+            Lit("]}"u8);
             return this;
         }
 
         public Match FindCellObject(FindCellResult r)
         {
-            Lit("{\"cells\":[");
+            Lit("{\"cells\":["u8);
             for (int i = 0; i < r.Cells.Count && ok; i++)
             {
                 if (i > 0)
                 {
-                    Lit(",");
+                    Lit(","u8);
                 }
 
                 Cell(r.Cells[i]);
             }
 
-            Lit("],\"containing\":");
+            Lit("],\"containing\":"u8);
             if (r.Containing.IsNone)
             {
-                Lit("null");
+                Lit("null"u8);
             }
             else
             {
@@ -117,32 +117,32 @@ internal static class ExpectedAnswer
 
             if (r.Loaded is { } loaded)
             {
-                Lit(",\"loaded\":[");
+                Lit(",\"loaded\":["u8);
                 for (int i = 0; i < loaded.Count && ok; i++)
                 {
                     if (i > 0)
                     {
-                        Lit(",");
+                        Lit(","u8);
                     }
 
-                    Lit(loaded[i] ? "true" : "false");
+                    Lit(loaded[i] ? "true"u8 : "false"u8);
                 }
 
-                Lit("]");
+                Lit("]"u8);
             }
 
             if (r.HitsInteriorCell is bool hits)
             {
-                Lit(hits ? ",\"hits_interior_cell\":true" : ",\"hits_interior_cell\":false");
+                Lit(hits ? ",\"hits_interior_cell\":true"u8 : ",\"hits_interior_cell\":false"u8);
             }
 
-            Lit("}");
+            Lit("}"u8);
             return this;
         }
 
-        private void Lit(ReadOnlySpan<char> expected)
+        private void Lit(ReadOnlySpan<byte> expected)
         {
-            ok = ok && text[at..].StartsWith(expected, StringComparison.Ordinal);
+            ok = ok && text[at..].StartsWith(expected);
             at += ok ? expected.Length : 0;
         }
 
@@ -151,8 +151,8 @@ internal static class ExpectedAnswer
         {
             Span<byte> cell = stackalloc byte[Wire.CellTextBytes];
             var expected = Wire.CellText(id, cell);
-            ok = ok && text.Length - at >= expected.Length + 2 && text[at] == '"' && text[at + expected.Length + 1] == '"'
-                && System.Text.Ascii.Equals(expected, text.Slice(at + 1, expected.Length));
+            ok = ok && text.Length - at >= expected.Length + 2 && text[at] == (byte)'"' && text[at + expected.Length + 1] == (byte)'"'
+                && expected.SequenceEqual(text.Slice(at + 1, expected.Length));
             at += ok ? expected.Length + 2 : 0;
         }
     }

@@ -254,6 +254,36 @@ internal sealed class LineProcess : IDisposable
         }
     }
 
+    /// <summary>Waits for the next answer line as <see cref="Receive"/> does, and gives its bytes (issue 26: the pipelined
+    /// reader compares them with the expected line and spells the text only when it needs it).</summary>
+    /// <param name="what">What the request answered is, for messages (the op name).</param>
+    /// <param name="request">The request line, for messages.</param>
+    /// <param name="timeout">How long an answer may take (--timeout), for messages.</param>
+    /// <param name="wait">How long to wait now; null waits <paramref name="timeout"/>.</param>
+    /// <returns>The answer line; its bytes are valid until the next receive.</returns>
+    /// <exception cref="AdapterFailureException">As <see cref="Receive"/>.</exception>
+    internal AnswerLine ReceiveLine(string what, object request, TimeSpan timeout, TimeSpan? wait = null)
+    {
+        if (Interlocked.Exchange(ref receiving, 1) != 0)
+        {
+            throw new InvalidOperationException($"two threads read the answers of '{commandLine}' at once");
+        }
+
+        try
+        {
+            if (dead || waitForAnswer is null)
+            {
+                return AnswerLine.OfText(ReceiveOne(what, request, timeout, wait));
+            }
+
+            return ReceiveSynchronously(answers!, what, request, timeout, wait, static (r, waitFor) => r.ReadLineUtf8(waitFor) is { } bytes ? AnswerLine.OfBytes(bytes) : null);
+        }
+        finally
+        {
+            Volatile.Write(ref receiving, 0);
+        }
+    }
+
     private string ReceiveOne(string what, object request, TimeSpan timeout, TimeSpan? wait)
     {
         if (dead)
@@ -264,7 +294,7 @@ internal sealed class LineProcess : IDisposable
         var reader = answers!;
         if (waitForAnswer is not null)
         {
-            return ReceiveSynchronously(reader, what, request, timeout, wait);
+            return ReceiveSynchronously(reader, what, request, timeout, wait, static (r, waitFor) => r.ReadLine(waitFor));
         }
 
         pending ??= reader.ReadLineAsync().AsTask(); // asynchronous: no pool thread blocks while the child thinks
@@ -296,14 +326,15 @@ internal sealed class LineProcess : IDisposable
 
     // Linux and macOS: this thread waits for the child's output with poll(2) and reads it itself (issue 26: the
     // asynchronous read cost a pool thread's hand-off and a sched_yield spin per answer — 18 % of a served gate's samples).
-    private string ReceiveSynchronously(BoundedLineReader reader, string what, object request, TimeSpan timeout, TimeSpan? wait)
+    private T ReceiveSynchronously<T>(BoundedLineReader reader, string what, object request, TimeSpan timeout, TimeSpan? wait, Func<BoundedLineReader, Func<bool>, T?> read)
+        where T : class
     {
         var allowed = wait is { } w ? (w < TimeSpan.Zero ? TimeSpan.Zero : w) : timeout;
         deadline = allowed >= TimeSpan.FromDays(1) ? long.MaxValue : Stopwatch.GetTimestamp() + (long)(allowed.TotalSeconds * Stopwatch.Frequency);
-        string? line;
+        T? line;
         try
         {
-            line = reader.ReadLine(waitForAnswer!);
+            line = read(reader, waitForAnswer!);
         }
         catch (TimeoutException)
         {

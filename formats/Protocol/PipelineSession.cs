@@ -124,7 +124,7 @@ internal sealed class PipelineSession : IDisposable
         int owner = building >= 0 ? building : next;
         Send(new Sent(owner, name, request, true, line =>
         {
-            bool same = ExpectedAnswer.Is(line, guess) || SameAnswer.Of(interpret(request.Text, line), guess);
+            bool same = ExpectedAnswer.Is(line.Bytes, guess) || SameAnswer.Of(interpret(request.Text, line.Text), guess);
             if (same && unloads is not null)
             {
                 lock (sync)
@@ -245,7 +245,7 @@ internal sealed class PipelineSession : IDisposable
 
         if (guessed)
         {
-            Send(new Sent(at, name, line, false, answer => ExpectedAnswer.Is(answer, value) || SameAnswer.Of(interpret(line.Text, answer), value)));
+            Send(new Sent(at, name, line, false, answer => ExpectedAnswer.Is(answer.Bytes, value) || SameAnswer.Of(interpret(line.Text, answer.Text), value)));
             return value;
         }
 
@@ -259,7 +259,7 @@ internal sealed class PipelineSession : IDisposable
         string? received = null;
         Send(new Sent(at, name, line, false, answer =>
         {
-            received = answer;
+            received = answer.Text; // kept: the bytes are the reader's until its next line
             return true;
         })
         { Done = done });
@@ -448,10 +448,10 @@ internal sealed class PipelineSession : IDisposable
                 AwaitHanded(sent);
                 long since = Math.Max(sent.At, lastAnswer);
                 bool failedBefore = child.Dead; // then a failed send said what happened, and this is only "no longer running"
-                string line;
+                AnswerLine line;
                 try
                 {
-                    line = child.Receive(sent.Name, sent.Request, timeout, timeout - Stopwatch.GetElapsedTime(since));
+                    line = child.ReceiveLine(sent.Name, sent.Request, timeout, timeout - Stopwatch.GetElapsedTime(since));
                 }
                 catch (AdapterFailureException e)
                 {
@@ -480,7 +480,7 @@ internal sealed class PipelineSession : IDisposable
 
                 if (!same)
                 {
-                    Diverge(sent.Query, sent.IsTransport ? null : sent.Request.Text, sent.IsTransport ? null : line, null);
+                    Diverge(sent.Query, sent.IsTransport ? null : sent.Request.Text, sent.IsTransport ? null : line.Text, null);
                 }
             }
             finally
@@ -491,7 +491,7 @@ internal sealed class PipelineSession : IDisposable
     }
 
     // A request in flight: what it is, when it was sent, and how its answer is compared.
-    private sealed record Sent(int Query, string Name, RequestLine Request, bool IsTransport, Func<string, bool> Matches)
+    private sealed record Sent(int Query, string Name, RequestLine Request, bool IsTransport, Func<AnswerLine, bool> Matches)
     {
         private volatile bool handed;
 

@@ -35,14 +35,22 @@ public static class Wire
     /// <returns>The compact JSON text's bytes, no line end.</returns>
     public static byte[] LineUtf8(Action<Utf8JsonWriter> fields) => Built(fields, 0, static (bytes, _) => bytes.ToArray());
 
-    /// <summary>Whether <paramref name="text"/> is exactly the line <paramref name="fields"/> builds (see <see cref="Line"/>), without building a string.</summary>
-    /// <param name="text">The text.</param>
+    /// <summary>Whether <paramref name="line"/> is exactly the UTF-8 of the line <paramref name="fields"/> builds (see <see cref="Line"/>).</summary>
+    /// <param name="line">The line's bytes.</param>
     /// <param name="fields">Writes the object's properties.</param>
-    /// <returns>True when equal.</returns>
-    public static bool LineIs(string text, Action<Utf8JsonWriter> fields) => Built(fields, text, static (bytes, text) =>
-        Ascii.IsValid(bytes)
-            ? bytes.Length == text.Length && Ascii.Equals(bytes, text)
-            : string.Equals(Encoding.UTF8.GetString(bytes), text, StringComparison.Ordinal));
+    /// <returns>True when byte for byte equal.</returns>
+    public static bool LineIs(ReadOnlySpan<byte> line, Action<Utf8JsonWriter> fields)
+    {
+        var writer = LineWriter.Rent();
+        try
+        {
+            return writer.Write(fields).SequenceEqual(line);
+        }
+        finally
+        {
+            writer.Return();
+        }
+    }
 
     /// <summary>Parses one message line into its root object.</summary>
     /// <param name="line">The line.</param>

@@ -51,6 +51,11 @@ internal static class DatTestSupport
         return EnvironmentCodec.Read(bytes, record.Id).ToDictionary(s => s.Key);
     }
 
+    /// <summary>Returns the bytes of an export's Environment record.</summary>
+    /// <param name="export">The export.</param>
+    /// <returns>The record's bytes.</returns>
+    public static byte[] StructBytes(DatExport export) => export.Records.Single(r => r.Record.Type == RecordType.Environment).Bytes;
+
     /// <summary>Returns the EnvCell records of an export, parsed back, by cell id.</summary>
     /// <param name="export">The export.</param>
     /// <returns>The records.</returns>

@@ -81,11 +81,11 @@ public sealed class AnswerLineReadsBack
             string le = new(edited);
             IReadOnlyList<FindCellResult> walk = [a, b], other = [b, a];
             string lw = ExpectedAnswer.Line(walk)!, lo = ExpectedAnswer.Line(other)!;
-            return (ExpectedAnswer.Is(la, a) && ExpectedAnswer.Is(lb, b) && ExpectedAnswer.Is(lw, walk)
-                    && ExpectedAnswer.Is(lb, a) == (lb == la)
-                    && ExpectedAnswer.Is(le, a) == (le == la)
-                    && ExpectedAnswer.Is(lo, walk) == (lo == lw)
-                    && !ExpectedAnswer.Is(la + " ", a) && !ExpectedAnswer.Is(la[..^1], a))
+            return (Is(la, a) && Is(lb, b) && Is(lw, walk)
+                    && Is(lb, a) == (lb == la)
+                    && Is(le, a) == (le == la)
+                    && Is(lo, walk) == (lo == lw)
+                    && !Is(la + " ", a) && !Is(la[..^1], a))
                 .Classify(lb == la, "same answer drawn twice")
                 .Classify(le == la, "edit left the line as it was");
         });
@@ -107,6 +107,9 @@ public sealed class AnswerLineReadsBack
         }
 
         using var doc = Wire.Parse(line);
-        return SameAnswer.Of(read(doc.RootElement), guess) && ExpectedAnswer.Is(line, guess);
+        return SameAnswer.Of(read(doc.RootElement), guess) && Is(line, guess);
     }
+
+    // The transport compares the answer's UTF-8 bytes.
+    private static bool Is(string line, object? guess) => ExpectedAnswer.Is(System.Text.Encoding.UTF8.GetBytes(line), guess);
 }
