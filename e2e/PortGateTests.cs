@@ -9,6 +9,7 @@ namespace AcPhys.E2E;
 /// tests and through verify — the same invariants pass, fail and are skipped, and each failing test's message holds
 /// verify's failure block verbatim, replay lines included.
 /// </summary>
+[Collection(PortGateCollection.Name)]
 public sealed partial class PortGateTests
 {
     public static TheoryData<string> Bugs => ["none", "clamp-106", "trunc", "edge-off-by-one", "inbound-x-only"];

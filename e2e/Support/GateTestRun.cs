@@ -16,23 +16,26 @@ internal static class GateTestRun
     /// <summary>Gets the example port's assembly beside it: the one the gate tests load, so the one verify is pointed at.</summary>
     public static string ExamplePortDll => Path.Combine(Path.GetDirectoryName(ExampleGateDll)!, "ExamplePort.dll");
 
-    /// <summary>Runs <c>dotnet</c> with the arguments in the repository root and reads the TRX file it was told to write.</summary>
-    /// <param name="args">The arguments after <c>dotnet</c>, naming a TRX logger whose file is <paramref name="trx"/>.</param>
-    /// <param name="trx">The TRX file.</param>
+    /// <summary>Runs <c>dotnet</c> (or a command) and reads the TRX file it was told to write.</summary>
+    /// <param name="args">The arguments after <c>dotnet</c> (or the command and its arguments), naming a TRX logger whose file is <paramref name="trx"/>.</param>
+    /// <param name="trx">The TRX file, or null when none is expected.</param>
     /// <param name="environment">Extra environment.</param>
+    /// <param name="folder">The working folder (the repository root when null).</param>
+    /// <param name="viaDotnet">Whether <paramref name="args"/> are dotnet's; else the first is the program.</param>
     /// <returns>The exit code, output, and one row per test.</returns>
-    public static (Run Run, IReadOnlyList<TrxRow> Rows) Dotnet(IEnumerable<string> args, string trx, IReadOnlyDictionary<string, string> environment)
+    public static (Run Run, IReadOnlyList<TrxRow> Rows) Dotnet(IEnumerable<string> args, string? trx, IReadOnlyDictionary<string, string> environment, string? folder = null, bool viaDotnet = true)
     {
-        var info = new ProcessStartInfo("dotnet")
+        var list = args.ToList();
+        var info = new ProcessStartInfo(viaDotnet ? "dotnet" : list[0])
         {
             RedirectStandardOutput = true,
             RedirectStandardError = true,
             UseShellExecute = false,
             StandardOutputEncoding = Encoding.UTF8,
             StandardErrorEncoding = Encoding.UTF8,
-            WorkingDirectory = RepoPaths.Root,
+            WorkingDirectory = folder ?? RepoPaths.Root,
         };
-        foreach (var a in args)
+        foreach (var a in viaDotnet ? list : list.Skip(1))
         {
             info.ArgumentList.Add(a);
         }
@@ -55,10 +58,15 @@ internal static class GateTestRun
         if (!process.WaitForExit(TimeSpan.FromMinutes(6)))
         {
             process.Kill(entireProcessTree: true);
-            throw new TimeoutException("dotnet " + string.Join(' ', info.ArgumentList) + " ran for more than six minutes");
+            throw new TimeoutException(info.FileName + " " + string.Join(' ', info.ArgumentList) + " ran for more than six minutes");
         }
 
         var run = new Run(process.ExitCode, stdout.Result, stderr.Result, stopwatch.Elapsed);
+        if (trx is null)
+        {
+            return (run, []);
+        }
+
         Assert.True(File.Exists(trx), "no TRX file " + trx + "\n" + run);
         return (run, Read(trx));
     }
