@@ -5,7 +5,7 @@ using AcPhys.E2E.Support;
 namespace AcPhys.E2E;
 
 /// <summary>
-/// packaging/pack.sh: AcPhys.Core, AcPhys.Contract (depending on Core only), AcPhys.Formats, AcPhys.Spec and the acphys
+/// packaging/pack.sh: AcPhys.Core, AcPhys.Contract (depending on Core only), AcPhys.Formats, AcPhys.Spec, AcPhys.Xunit and the acphys
 /// .NET tool, packed once for the class; the tool installs from the local folder and runs, and an adapter builds
 /// against the contract package alone.
 /// </summary>
@@ -15,7 +15,7 @@ public sealed class PackagingTests(PackagingTests.PackedFolder packed) : IClassF
     public void ToolInstallsFromTheLocallyPackedPackageAndRuns()
     {
         string packages = packed.Packages, version = packed.Version, tools = Path.Combine(packed.Work, "tools");
-        foreach (string id in new[] { "AcPhys.Core", "AcPhys.Contract", "AcPhys.Formats", "AcPhys.Spec", "AcPhys.Cli" })
+        foreach (string id in new[] { "AcPhys.Core", "AcPhys.Contract", "AcPhys.Formats", "AcPhys.Spec", "AcPhys.Xunit", "AcPhys.Cli" })
         {
             Assert.True(Directory.GetFiles(packages, id + ".*.nupkg").Length == 1, $"{id} not packed:\n{packed.Output}");
         }
@@ -25,6 +25,7 @@ public sealed class PackagingTests(PackagingTests.PackedFolder packed) : IClassF
         Assert.Equal(["AcPhys.Contract"], packed.Dependencies("AcPhys.Formats"));
         Assert.Contains("AcPhys.Formats", packed.Dependencies("AcPhys.Spec"));
         Assert.Contains("FsCheck", packed.Dependencies("AcPhys.Spec"));
+        Assert.Equal(["AcPhys.Spec", "xunit.assert", "xunit.extensibility.core", "xunit.extensibility.execution", "Xunit.SkippableFact"], packed.Dependencies("AcPhys.Xunit").Order(StringComparer.OrdinalIgnoreCase));
         using (var spec = ZipFile.OpenRead(Directory.GetFiles(packages, "AcPhys.Spec.*.nupkg")[0]))
         {
             Assert.NotNull(spec.GetEntry("lib/net10.0/AcPhys.Spec.dll"));

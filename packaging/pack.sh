@@ -4,6 +4,7 @@
 #   AcPhys.Contract (the adapter contract a port implements: ICellPhysics, Op, Scene; depends on AcPhys.Core, no FsCheck)
 #   AcPhys.Formats  (case values, corpus and scene JSON, dat records, protocol v1 client/server; depends on AcPhys.Contract)
 #   AcPhys.Spec  (the checking engine: invariants, generators, shrinkers, planted faults, runner; depends on AcPhys.Formats, FsCheck)
+#   AcPhys.Xunit (the gate as a port's xunit tests, GateTests<TAdapter>; depends on AcPhys.Spec, xunit 2, Xunit.SkippableFact)
 #   AcPhys.Cli   (the acphys command as a .NET tool: dotnet tool install AcPhys.Cli)
 # Usage: packaging/pack.sh [-o DIR] [-c Release|Debug] [--version X.Y.Z] [--no-build]
 set -euo pipefail
@@ -27,7 +28,7 @@ mkdir -p "$out"
 # A build made here (with --version) must not replace the checkout's own cli/bin, which ./acphys runs (issue 19: it
 # changed `./acphys --version`): build output and intermediates go to artifacts/pack-build. --no-build packs what is built.
 if [[ $no_build == 0 ]]; then extra+=("--artifacts-path" "$root/artifacts/pack-build"); fi
-for project in core/AcPhys.Core.csproj contract/AcPhys.Contract.csproj formats/AcPhys.Formats.csproj spec/AcPhys.Spec.csproj cli/AcPhys.Cli.csproj; do
+for project in core/AcPhys.Core.csproj contract/AcPhys.Contract.csproj formats/AcPhys.Formats.csproj spec/AcPhys.Spec.csproj xunit/AcPhys.Xunit.csproj cli/AcPhys.Cli.csproj; do
   packable=()
   [[ "$project" == core/* ]] && packable=("-p:IsPackable=true")
   DOTNET_NOLOGO=1 dotnet pack "$root/$project" -c "$configuration" -o "$out" -nologo -v:quiet "${packable[@]}" "${extra[@]}"

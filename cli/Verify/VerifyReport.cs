@@ -12,7 +12,6 @@ namespace AcPhys.Cli.Verify;
 /// <param name="impl">The implementation under test.</param>
 internal sealed class VerifyReport(VerifySettings settings, ICellPhysics impl)
 {
-    private const int MaxFieldChars = 2000;
     private readonly Dictionary<string, FailureDetail> details = [];
 
     /// <summary>Returns the verdict word of a status.</summary>
@@ -147,48 +146,13 @@ internal sealed class VerifyReport(VerifySettings settings, ICellPhysics impl)
         {
             Terminal.Line();
             Terminal.Out.MarkupLine($"[red bold]FAIL[/] [bold]{Markup.Escape(r.Invariant.Id)}[/] on {Markup.Escape(impl.Name)}");
-            Field("statement", r.Invariant.Statement);
-            bool swept = r.Replay is null && r.ExhaustiveCases > 0;
-            if (r.Violation is { } v)
+            var block = FailureBlock.Of(r, impl, impl.Name, ReplayLine.Command(settings), FailureFolder, FinderNames.Verify);
+            foreach (string field in block.Fields)
             {
-                Field(swept ? "case" : "shrunk", v.CaseText);
-                Field("message", v.Message);
-                if (Spec.Judging.IntendedUnder.Find(impl, r.Invariant.Id, [.. new[] { v.Case, r.Original?.Case }.OfType<AnyCase>().Distinct()]) is string declaration)
-                {
-                    Field("intended", $"your answers are the reference's if you declare {declaration} in hello (.NET: ICellPhysics Indoor/Outdoor/Pick): a documented deviation (docs/conformance.md, \"Declared modes\")");
-                }
+                Terminal.Line(field);
             }
 
-            if (swept)
-            {
-                Field("found by", $"the exhaustive sweep ({Fmt.Count(r.ExhaustiveCases)} cases): first violation in sweep order, not shrunk");
-            }
-            else if (r.Original is { } o && o != r.Violation)
-            {
-                Field("original", o.CaseText);
-                if (o.Message != r.Violation?.Message)
-                {
-                    Field(string.Empty, o.Message);
-                }
-            }
-
-            var (line, confirmed) = ReplayLine.For(r, settings, impl);
-            Field("seed", r.Seed.ToString());
-            Field("replay", line);
-            string? caseFile = null, caseReplay = null;
-            if (r.Violation is { } shrunk && WriteCaseFile(shrunk, r.Seed) is string file)
-            {
-                caseFile = file;
-                caseReplay = string.Join(' ', new[] { ReplayLine.Program, "replay", file }.Concat(settings.Fault is null ? [] : ["--fault", settings.Fault.Id]).Concat(settings.Implementation.Words()).Select(ReplayLine.Quote));
-                Field("case file", file);
-                Field("replay", caseReplay);
-            }
-
-            details[r.Invariant.Id] = new FailureDetail(line, confirmed, caseFile, caseReplay, r.Violation?.Case is AnyCase.OutdoorWalk { Walk: var walk } ? StepRows(walk) : null);
-            if (!confirmed)
-            {
-                Field(string.Empty, "(note: re-running this line did not reproduce the same shrunk case)");
-            }
+            details[r.Invariant.Id] = new FailureDetail(block.ReplayLine, block.Confirmed, block.CaseFile, block.CaseReplay, r.Violation?.Case is AnyCase.OutdoorWalk { Walk: var walk } ? StepRows(walk) : null);
         }
     }
 
@@ -300,20 +264,6 @@ internal sealed class VerifyReport(VerifySettings settings, ICellPhysics impl)
             "[" + string.Join(", ", step.Cells) + "]",
         }).ToArray();
 
-    // A folder that cannot take the case file (a read-only checkout) loses the file, not the verdict or the reports.
-    private static string? WriteCaseFile(Spec.Invariants.Violation shrunk, Seed seed)
-    {
-        try
-        {
-            return FailureFile.Write(shrunk, FailureFolder, FinderNames.Verify, seed.ToString());
-        }
-        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
-        {
-            Field("case file", "not written: " + e.Message);
-            return null;
-        }
-    }
-
     private static void WriteFile(string path, string text)
     {
         OutputPath.Write(path, text);
@@ -334,11 +284,6 @@ internal sealed class VerifyReport(VerifySettings settings, ICellPhysics impl)
 
     /// <summary>Gets the folder shrunk failing cases are written to: <c>ACPHYS_FAILURES</c>, else artifacts/failures.</summary>
     public static string FailureFolder => Environment.GetEnvironmentVariable("ACPHYS_FAILURES") is { Length: > 0 } f ? f : Path.Combine("artifacts", "failures");
-
-    // An implementation's text is escaped where it enters (the protocol, the --impl wrapper); the console line is also cut
-    // (the failure file keeps the whole text).
-    private static void Field(string name, string value) =>
-        Terminal.Line($"  {name,-10} {Spec.Values.InputQuote.Brief(Spec.Values.InputQuote.Escape(value, keepLines: true), MaxFieldChars)}");
 
     private string WholeRunReplay()
     {

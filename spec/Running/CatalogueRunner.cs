@@ -239,29 +239,49 @@ public static class CatalogueRunner
                 continue;
             }
 
-            var seed = fixedSeed ?? Seed.Derive(runBase, invariant.Id);
-            var result = invariant.Run(impl, profile.CasesPerInvariant, seed, maxClasses: maxClasses);
-            if (profile.Exhaustive && result.Status == ResultStatus.Passed && fixedSeed is null && invariant is Invariant<LandCase> land)
-            {
-                var sweep = impl is ProcessAdapter { Pipelines: true } piped ? piped.Pipelined(() => Exhaustive.For(land, impl)) : Exhaustive.For(land, impl); // --sweeps served: streamed too
-                if (sweep is not null)
-                {
-                    result = result with
-                    {
-                        ExhaustiveCases = sweep.Cases,
-                        Status = sweep.FirstViolation is null ? ResultStatus.Passed : ResultStatus.Failed,
-                        Violation = sweep.FirstViolation,
-                        Original = sweep.FirstViolation,
-                        Elapsed = result.Elapsed + sweep.Elapsed,
-                    };
-                }
-            }
-
+            var result = RunInvariant(invariant, impl, profile, runBase, fixedSeed, maxClasses);
             results.Add(result);
             progress?.Invoke(result);
         }
 
         return results;
+    }
+
+    /// <summary>
+    /// Runs one invariant of the catalogue as <see cref="RunCatalogue"/> does: its seed derived from the run's base seed
+    /// and its ID (or the fixed seed), the profile's cases, then the exhaustive sweep of a LandDefs invariant that passed
+    /// when the profile sweeps and no seed is fixed. The gate as xunit tests (AcPhys.Xunit) runs each invariant through
+    /// this, so its verdicts are <c>acphys verify</c>'s.
+    /// </summary>
+    /// <param name="invariant">The invariant.</param>
+    /// <param name="impl">The implementation under test.</param>
+    /// <param name="profile">The budget.</param>
+    /// <param name="runBase">The run's base seed (the profile's, or a fresh one printed by the caller).</param>
+    /// <param name="fixedSeed">A seed to use instead of the derived one (no sweep then).</param>
+    /// <param name="maxClasses">Failure classes a failing invariant searches for.</param>
+    /// <returns>The result.</returns>
+    /// <exception cref="AdapterFailureException">The implementation could not answer at all.</exception>
+    public static InvariantResult RunInvariant(Invariant invariant, ICellPhysics impl, Profile profile, ulong runBase, Seed? fixedSeed = null, int maxClasses = MaxClasses)
+    {
+        var seed = fixedSeed ?? Seed.Derive(runBase, invariant.Id);
+        var result = invariant.Run(impl, profile.CasesPerInvariant, seed, maxClasses: maxClasses);
+        if (profile.Exhaustive && result.Status == ResultStatus.Passed && fixedSeed is null && invariant is Invariant<LandCase> land)
+        {
+            var sweep = impl is ProcessAdapter { Pipelines: true } piped ? piped.Pipelined(() => Exhaustive.For(land, impl)) : Exhaustive.For(land, impl); // --sweeps served: streamed too
+            if (sweep is not null)
+            {
+                result = result with
+                {
+                    ExhaustiveCases = sweep.Cases,
+                    Status = sweep.FirstViolation is null ? ResultStatus.Passed : ResultStatus.Failed,
+                    Violation = sweep.FirstViolation,
+                    Original = sweep.FirstViolation,
+                    Elapsed = result.Elapsed + sweep.Elapsed,
+                };
+            }
+        }
+
+        return result;
     }
 
     // A violation of an excluded (already reported) class counts as holding, so a further search fails only on a new class.
