@@ -83,6 +83,47 @@ public sealed class PackagingTests(PackagingTests.PackedFolder packed) : IClassF
         }
     }
 
+    [Fact(DisplayName = "PORT-PACKAGE: a port's own xunit project runs the gate from the packed AcPhys.Xunit alone (24 passed, 19 skipped on the example port)")]
+    public void GateTestsRunFromTheXunitPackageInAPortsOwnProject()
+    {
+        // A port's repository, outside this one: the example port's source and its one-line gate class in an ordinary
+        // xunit project whose only AcPhysVerify reference is the AcPhys.Xunit package.
+        string project = Directory.CreateDirectory(Path.Combine(packed.Work, "my-port-gate")).FullName;
+        string example = Path.Combine(RepoPaths.Root, "examples", "dotnet-port");
+        foreach (string source in Directory.GetFiles(example, "*.cs").Append(Path.Combine(example, "GateTests", "ExamplePortGate.cs")))
+        {
+            File.Copy(source, Path.Combine(project, Path.GetFileName(source)));
+        }
+
+        File.WriteAllText(Path.Combine(project, "MyPortGate.csproj"), $$"""
+            <Project Sdk="Microsoft.NET.Sdk">
+              <PropertyGroup>
+                <TargetFramework>net10.0</TargetFramework>
+                <Nullable>enable</Nullable>
+                <ImplicitUsings>enable</ImplicitUsings>
+                <IsPackable>false</IsPackable>
+              </PropertyGroup>
+              <ItemGroup>
+                <PackageReference Include="AcPhys.Xunit" Version="{{packed.Version}}" />
+                <PackageReference Include="Microsoft.NET.Test.Sdk" Version="18.0.1" />
+                <PackageReference Include="xunit" Version="2.9.3" />
+                <PackageReference Include="xunit.runner.visualstudio" Version="3.1.5" />
+              </ItemGroup>
+            </Project>
+            """);
+        File.WriteAllText(Path.Combine(project, "nuget.config"), $$"""
+            <configuration>
+              <packageSources>
+                <clear />
+                <add key="packed" value="{{packed.Packages}}" />
+              </packageSources>
+            </configuration>
+            """); // xunit, FsCheck and the rest resolve from the global packages folder this repository's restore filled
+        var test = Exec("dotnet", ["test", Path.Combine(project, "MyPortGate.csproj"), "-c", "Release", "-nologo"]);
+        Assert.True(test.Exit == 0, test.Output);
+        Assert.Matches(@"Failed:\s+0, Passed:\s+24, Skipped:\s+19, Total:\s+43", test.Output);
+    }
+
     private static (int Exit, string Output) Exec(string file, IEnumerable<string> args)
     {
         var info = new ProcessStartInfo(file) { RedirectStandardOutput = true, RedirectStandardError = true, UseShellExecute = false, WorkingDirectory = Path.GetTempPath() };
