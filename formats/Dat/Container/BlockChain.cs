@@ -22,12 +22,13 @@ public static class BlockChain
     /// <exception cref="DatContainerException">The chain is damaged.</exception>
     public static byte[] Read(IBlockSource source, uint blockSize, uint start, uint size, uint? id, ContainerWork work)
     {
+        string what = id is null ? "directory node: " : string.Empty;
         long payload = blockSize - 4;
         long blocksNeeded = (size + payload - 1) / payload;
         // A chain of distinct blocks cannot hold more than the file's blocks: refuse before allocating (no out-of-memory).
         if (blocksNeeded > (source.Length / blockSize) + 1)
         {
-            throw new DatContainerException(source.Name, id, start, $"size {size} needs {blocksNeeded} blocks of {blockSize}; the file ({source.Length} bytes) cannot hold them");
+            throw new DatContainerException(source.Name, id, start, $"{what}size {size} needs {blocksNeeded} blocks of {blockSize}; the file ({source.Length} bytes) cannot hold them");
         }
 
         var data = new byte[size];
@@ -44,18 +45,18 @@ public static class BlockChain
         {
             if (at <= 0 || at + 4 > source.Length)
             {
-                throw new DatContainerException(source.Name, id, at, $"block {seen.Count} of the chain lies outside the file ({source.Length} bytes)");
+                throw new DatContainerException(source.Name, id, at, $"{what}block {seen.Count} of the chain lies outside the file ({source.Length} bytes)");
             }
 
             if (!seen.Add(at))
             {
-                throw new DatContainerException(source.Name, id, at, $"the chain loops: block {seen.Count} is the block at this offset again");
+                throw new DatContainerException(source.Name, id, at, $"{what}the chain loops: block {seen.Count} is the block at this offset again");
             }
 
             int take = (int)Math.Min(payload, size - filled);
             if (at + 4 + take > source.Length)
             {
-                throw new DatContainerException(source.Name, id, at, $"block {seen.Count - 1} of the chain runs past the end of the file ({source.Length} bytes)");
+                throw new DatContainerException(source.Name, id, at, $"{what}block {seen.Count - 1} of the chain runs past the end of the file ({source.Length} bytes)");
             }
 
             source.Read(at, link);
@@ -71,7 +72,7 @@ public static class BlockChain
             uint next = BinaryPrimitives.ReadUInt32LittleEndian(link);
             if (next == 0)
             {
-                throw new DatContainerException(source.Name, id, at, $"the chain ends after {filled} of the {size} bytes the directory states");
+                throw new DatContainerException(source.Name, id, at, $"{what}the chain ends after {filled} of the {size} bytes the directory states");
             }
 
             at = next;
