@@ -18,6 +18,9 @@ internal static class ExitCodes
     /// <summary>Nothing was violated but fewer invariants were tested than <c>verify --min-tested</c> (default 1): a run that tested nothing is never a pass.</summary>
     public const int TooFewTested = 4;
 
+    /// <summary>A dat container given on the command line cannot be read (truncated, a broken chain or directory, a refused record): the message names the file, the object and the offset (docs/dat-container.md).</summary>
+    public const int BadDat = 5;
+
     /// <summary>An internal error of the tool (a bug, never bad input): one line on stderr, the stack trace with <c>ACPHYS_DEBUG=1</c> (sysexits EX_SOFTWARE).</summary>
     public const int InternalError = 70;
 

@@ -117,6 +117,9 @@ internal static class Guard
             case OutputPathException:
                 Terminal.Error(verb, error.Message);
                 return ExitCodes.OutputError;
+            case AcPhys.Spec.Dat.Container.DatContainerException:
+                Terminal.Error(verb, error.Message);
+                return ExitCodes.BadDat;
             case UsageException or CorpusFormatException or AcPhys.Spec.Dat.DatFormatException:
                 Terminal.Error(verb, error.Message);
                 break;

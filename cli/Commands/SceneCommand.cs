@@ -23,7 +23,7 @@ internal static class SceneCommand
         var import = new Command("import", "Read a record folder back into a scene-walk corpus file (or a bare scene).") { dir, output };
         import.SetAction(parse => Guard.Run("scene import", () => Import(parse.GetValue(dir) ?? string.Empty, parse.GetValue(output) ?? string.Empty)));
 
-        return new Command("scene", "Convert scenes to and from retail dat records.") { export, import };
+        return new Command("scene", "Convert scenes to and from retail dat records; extract one from dat files.") { export, import, SceneFromDat.Create(), SceneToDat.Create() };
     }
 
     private static int Export(string path, string dir)

@@ -87,11 +87,12 @@ internal static class VerifyCommand
         var junit = new Option<string>("--junit") { Description = "Also write the results as JUnit XML (one testcase per invariant) to this file.", HelpName = "FILE" };
         var markdown = new Option<string>("--markdown") { Description = "Also write a markdown summary fit for a PR comment to this file.", HelpName = "FILE" };
         var implOptions = new ImplementationOptions();
+        var datWorld = new DatWorldStage();
         var command = new Command("verify", "Run the invariant catalogue against the reference core, a planted fault, or your implementation (--impl, --impl-cmd), and report.")
         {
             profile, only, except, scope, seed, baseSeed, fault, quiet, classes, pick, fidelity, cases, maxClasses, sweeps, junit, markdown, minTested,
         };
-        foreach (var option in implOptions.All)
+        foreach (var option in implOptions.All.Concat(datWorld.All))
         {
             command.Options.Add(option);
         }
@@ -123,7 +124,7 @@ internal static class VerifyCommand
                 MarkdownPath = parse.GetValue(markdown),
                 MinTested = parse.GetValue(minTested) ?? 1,
             };
-            return Run(WithBudget(settings, parse.GetValue(sweeps)));
+            return Run(WithBudget(settings, parse.GetValue(sweeps)), datWorld.Read(parse));
         }));
         return command;
     }
@@ -177,19 +178,37 @@ internal static class VerifyCommand
         return settings with { Profile = profile };
     }
 
-    private static int Run(VerifySettings settings)
+    private static int Run(VerifySettings settings, DatWorldStage.Request? datWorld)
     {
         if (!settings.Implementation.IsExternal)
         {
             ICellPhysics reference = settings.Fault is not null ? PlantedFaults.Create(settings.Fault.Id) : Impl.ReferenceChoice.Create(settings.Pick, settings.Fidelity);
-            return Run(settings, reference);
+            return Run(settings, reference, datWorld);
         }
 
         var (impl, owned) = settings.Implementation.Open(settings.Quiet ? null : line => Console.Error.WriteLine("[impl] " + line));
         using (owned)
         {
-            return Run(settings, impl);
+            return Run(settings, impl, datWorld);
         }
+    }
+
+    private static int Run(VerifySettings settings, ICellPhysics impl, DatWorldStage.Request? datWorld)
+    {
+        if (datWorld is { Block: not null })
+        {
+            // The replay of a dat-world finding: that block's walks alone, no catalogue.
+            return DatWorldStage.Run(datWorld, settings, impl) ? ExitCodes.Ok : ExitCodes.Violated;
+        }
+
+        int exit = Run(settings, impl);
+        if (datWorld is null)
+        {
+            return exit;
+        }
+
+        bool held = DatWorldStage.Run(datWorld, settings, impl);
+        return held ? exit : ExitCodes.Violated;
     }
 
     private static int Run(VerifySettings settings, ICellPhysics impl)

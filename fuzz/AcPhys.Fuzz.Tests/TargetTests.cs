@@ -31,7 +31,7 @@ public sealed class TargetTests
     {
         var names = FuzzTargets.All.Select(t => t.Name).ToArray();
 
-        Assert.Equal(["land", "parts", "scene", "walk", "corpus", "dat-records", "scene-json", "serve-request", "walk-json", "toy", "toy-slow"], names);
+        Assert.Equal(["land", "parts", "scene", "walk", "corpus", "dat-container", "dat-records", "scene-json", "serve-request", "walk-json", "toy", "toy-slow"], names);
         Assert.Equal(names.Length, names.Distinct().Count());
     }
 
