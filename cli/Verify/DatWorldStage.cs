@@ -18,10 +18,11 @@ internal sealed class DatWorldStage
     private readonly Option<string?> cell = new("--cell-dat") { Description = "A cell database (client_cell_1.dat): also walk scenes of real buildings and dungeons sampled from it (docs/dat-container.md). Needs --portal-dat.", HelpName = "FILE" };
     private readonly Option<string?> portal = new("--portal-dat") { Description = "The portal database (client_portal.dat) beside --cell-dat.", HelpName = "FILE" };
     private readonly Option<string?> block = new("--dat-block") { Description = "Walk only this landblock of the dat world, and skip the catalogue (the replay of a dat-world finding).", HelpName = "0xAABB" };
+    private readonly Option<string?> positions = new("--positions") { Description = "Real indoor positions to check against the dat world (tab-separated, columns obj_cell_id x y z kind; default: ../shared/data/retail-positions.tsv beside the checkout, when present). Reported by reason; not a gate.", HelpName = "FILE" };
     private readonly Option<int?> blocks = new("--dat-blocks") { Description = $"How many landblocks to sample (default: {DatWorldGate.PrBlocks} in pr, {DatWorldGate.NightlyBlocks} in nightly).", HelpName = "N" };
 
     /// <summary>Gets the options, to add to the verify command.</summary>
-    public IEnumerable<Option> All => [cell, portal, block, blocks];
+    public IEnumerable<Option> All => [cell, portal, block, blocks, positions];
 
     /// <summary>Reads the options.</summary>
     /// <param name="parse">The parse result.</param>
@@ -52,7 +53,13 @@ internal sealed class DatWorldStage
             throw new UsageException($"--dat-blocks must be between 1 and 100,000 (got {n})");
         }
 
-        return new Request(c, p, one, n);
+        string? file = parse.GetValue(positions);
+        if (file is not null && !File.Exists(file))
+        {
+            throw new UsageException($"--positions {file}: no such file");
+        }
+
+        return new Request(c, p, one, n, file ?? DefaultPositions());
     }
 
     /// <summary>Runs the gate and prints it.</summary>
@@ -102,7 +109,32 @@ internal sealed class DatWorldStage
             Console.WriteLine("dat world: no walk was judged (no sampled block held an env cell with a portal a walk can cross)");
         }
 
+        if (request.Block is null && request.Positions is { } tsv)
+        {
+            // The real-data check (docs/dat-container.md): reported by reason, as the outdoor rows are; not a gate.
+            var rows = IndoorPositionsFile.Read(tsv, out int skipped);
+            var check = IndoorPositionCheck.Run(world, impl, rows);
+            Console.WriteLine($"indoor positions ({tsv}): {check}{(skipped > 0 ? $"; {skipped} rows did not parse" : string.Empty)}");
+            foreach (var (row, got) in check.Disagreements.Take(5))
+            {
+                Console.WriteLine(string.Create(CultureInfo.InvariantCulture, $"  {row.Cell} at ({row.Position.X}, {row.Position.Y}, {row.Position.Z}): find_cell names {got}"));
+            }
+        }
+
         return result.Findings.Count == 0;
+    }
+
+    private static string? DefaultPositions()
+    {
+        try
+        {
+            string path = Path.Combine(Fuzz.RepoRoot.Find(), "..", "shared", "data", "retail-positions.tsv");
+            return File.Exists(path) ? Path.GetFullPath(path) : null;
+        }
+        catch (UsageException)
+        {
+            return null; // not inside a checkout: no default
+        }
     }
 
     private static string Replay(Request request, LandblockId block, VerifySettings settings)
@@ -127,5 +159,6 @@ internal sealed class DatWorldStage
     /// <param name="Portal">The portal database.</param>
     /// <param name="Block">One block to walk (no catalogue), or null to sample.</param>
     /// <param name="Blocks">The sample size, or null for the profile's.</param>
-    internal sealed record Request(string Cell, string Portal, LandblockId? Block, int? Blocks);
+    /// <param name="Positions">The real positions file, or null.</param>
+    internal sealed record Request(string Cell, string Portal, LandblockId? Block, int? Blocks, string? Positions);
 }
