@@ -149,6 +149,10 @@ internal sealed class WatchedAdapter : ICellPhysics, IDisposable
         Call("find_cell", () => inner.FindCell(cell, origin, spheres, current));
 
     /// <inheritdoc/>
+    public IReadOnlyList<FindCellResult> FindCellWalk(WalkRequest walk) =>
+        Call("find_cell_walk", () => inner.FindCellWalk(walk)); // a port whose array lives for a walk (ace-keeps-stale-cells) answers it whole
+
+    /// <inheritdoc/>
     public void Dispose()
     {
         stop.Cancel();
