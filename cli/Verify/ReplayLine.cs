@@ -78,11 +78,7 @@ internal static class ReplayLine
             words.AddRange(["--seed", s.ToString()]);
         }
 
-        if (settings.Fault is not null)
-        {
-            words.AddRange(["--fault", settings.Fault.Id]);
-        }
-
+        words.AddRange(settings.Mode.Words()); // --pick, --fidelity, --fault: every option that changes the verdict (issue 41)
         words.AddRange(settings.Implementation.Words());
         return string.Join(' ', words.Select(Quote));
     }

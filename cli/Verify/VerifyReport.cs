@@ -179,7 +179,7 @@ internal sealed class VerifyReport(VerifySettings settings, ICellPhysics impl)
             if (r.Violation is { } shrunk && WriteCaseFile(shrunk, r.Seed) is string file)
             {
                 caseFile = file;
-                caseReplay = string.Join(' ', new[] { ReplayLine.Program, "replay", file }.Concat(settings.Fault is null ? [] : ["--fault", settings.Fault.Id]).Concat(settings.Implementation.Words()).Select(ReplayLine.Quote));
+                caseReplay = string.Join(' ', new[] { ReplayLine.Program, "replay", file }.Concat(settings.Implementation.Words()).Select(ReplayLine.Quote)); // the mode is in the file
                 Field("case file", file);
                 Field("replay", caseReplay);
             }
@@ -301,11 +301,11 @@ internal sealed class VerifyReport(VerifySettings settings, ICellPhysics impl)
         }).ToArray();
 
     // A folder that cannot take the case file (a read-only checkout) loses the file, not the verdict or the reports.
-    private static string? WriteCaseFile(Spec.Invariants.Violation shrunk, Seed seed)
+    private string? WriteCaseFile(Spec.Invariants.Violation shrunk, Seed seed)
     {
         try
         {
-            return FailureFile.Write(shrunk, FailureFolder, FinderNames.Verify, seed.ToString());
+            return FailureFile.Write(shrunk, FailureFolder, FinderNames.Verify, seed.ToString(), settings.Mode);
         }
         catch (Exception e) when (e is IOException or UnauthorizedAccessException)
         {
@@ -353,11 +353,7 @@ internal sealed class VerifyReport(VerifySettings settings, ICellPhysics impl)
             words.AddRange(["--except", string.Join(',', settings.Except)]);
         }
 
-        if (settings.Fault is not null)
-        {
-            words.AddRange(["--fault", settings.Fault.Id]);
-        }
-
+        words.AddRange(settings.Mode.Words());
         words.AddRange(settings.Implementation.Words());
         return string.Join(' ', words.Select(ReplayLine.Quote));
     }
