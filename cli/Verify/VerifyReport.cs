@@ -153,9 +153,14 @@ internal sealed class VerifyReport(VerifySettings settings, ICellPhysics impl)
             {
                 Field(swept ? "case" : "shrunk", v.CaseText);
                 Field("message", v.Message);
-                if (Spec.Judging.IntendedUnder.Find(impl, r.Invariant.Id, [.. new[] { v.Case, r.Original?.Case }.OfType<AnyCase>().Distinct()]) is string declaration)
+                switch (Spec.Judging.IntendedUnder.Explain(impl, r.Invariant.Id, [.. new[] { v.Case, r.Original?.Case }.OfType<AnyCase>().Distinct()]))
                 {
-                    Field("intended", $"your answers are the reference's if you declare {declaration} in hello (.NET: ICellPhysics Indoor/Outdoor/Pick): a documented deviation (docs/conformance.md, \"Declared modes\")");
+                    case { Declaration: string declaration }:
+                        Field("intended", $"your answers are the reference's if you declare {declaration} in hello (.NET: ICellPhysics Indoor/Outdoor/Pick), on this case, the original and {Spec.Judging.IntendedUnder.FreshCases} fresh cases of its class: a documented deviation (docs/conformance.md, \"Declared modes\")");
+                        break;
+                    case { Differs: string differs }:
+                        Field("intended", "no: " + differs);
+                        break;
                 }
             }
 

@@ -5,7 +5,6 @@ using AcPhys.Spec.Cases;
 using AcPhys.Spec.Generators;
 using AcPhys.Spec.Invariants;
 using AcPhys.Spec.Running;
-using AcPhys.Spec.Scenes;
 using FsCheck;
 using FsCheck.Fluent;
 
@@ -42,36 +41,16 @@ public sealed class StaleCellsExactTests
 
     [Fact(DisplayName = "FIND-CELL-CONFORMANCE (ace-keeps-stale-cells declared): a port that only reorders the candidates fails")]
     public void ReorderingFails() =>
-        Assert.Equal(ResultStatus.Failed, ConformanceInvariants.FindCell.Run(new Rewritten(Stale, Reversed), Cases, SeedOf, maxClasses: 1).Status);
+        Assert.Equal(ResultStatus.Failed, ConformanceInvariants.FindCell.Run(new RewrittenAnswers(Stale, RewrittenAnswers.Reversed), Cases, SeedOf, maxClasses: 1).Status);
 
     [Fact(DisplayName = "FIND-CELL-CONFORMANCE (ace-keeps-stale-cells declared): a port that only adds a cell no query of the walk answered fails")]
     public void AddingANonStaleCellFails() =>
-        Assert.Equal(ResultStatus.Failed, ConformanceInvariants.FindCell.Run(new Rewritten(Stale, WithExtraCell), Cases, SeedOf, maxClasses: 1).Status);
+        Assert.Equal(ResultStatus.Failed, ConformanceInvariants.FindCell.Run(new RewrittenAnswers(Stale, RewrittenAnswers.WithExtraCell), Cases, SeedOf, maxClasses: 1).Status);
 
     [Fact(DisplayName = "FIND-CELL-CONFORMANCE (ace-keeps-stale-cells declared): a port that clears its array every query (retail) fails the declaration")]
     public void RetailDeclaringStaleFails() =>
-        Assert.Equal(ResultStatus.Failed, ConformanceInvariants.FindCell.Run(new Rewritten(ReferenceAdapter.Instance, r => r) { Declares = Stale.Indoor }, Cases, SeedOf, maxClasses: 1).Status);
-
-    private static FindCellResult Reversed(FindCellResult r) =>
-        r.Cells.Count < 2 ? r : new FindCellResult([.. r.Cells.Reverse()], r.Containing) { Loaded = r.Loaded?.Reverse().ToArray(), HitsInteriorCell = r.HitsInteriorCell };
-
-    // A land cell at the far corner of the map: never a candidate of a generated walk, so never stale.
-    private static FindCellResult WithExtraCell(FindCellResult r) =>
-        r.Cells.Count == 0 ? r : new FindCellResult([.. r.Cells, new CellId(0x00000001)], r.Containing) { Loaded = r.Loaded is { } l ? [.. l, true] : null, HitsInteriorCell = r.HitsInteriorCell };
+        Assert.Equal(ResultStatus.Failed, ConformanceInvariants.FindCell.Run(new RewrittenAnswers(ReferenceAdapter.Instance, r => r) { Declares = Stale.Indoor }, Cases, SeedOf, maxClasses: 1).Status);
 
     private static IEnumerable<WalkRequest> StaleWalks(int count) =>
         Gen.Sample(SceneGens.Recipes.Select(r => r.Build()), count, new Rnd(41, 0x9E3779B97F4A7C15UL), 50).Select(w => WalkRunner.Request(w.Walk, w.Scene));
-
-    // The inner port's answers, each rewritten; a whole walk is answered by the inner port (its array lives for the walk).
-    private sealed class Rewritten(ICellPhysics inner, Func<FindCellResult, FindCellResult> rewrite) : Forwarding(inner), ICellPhysics
-    {
-        public IndoorFidelity? Declares { get; init; }
-
-        public override IndoorFidelity Indoor => Declares ?? Inner.Indoor;
-
-        public override FindCellResult FindCell(Scene? scene, CellId cell, IReadOnlyList<Sphere> spheres, CellId current, bool loadCells) =>
-            rewrite(Inner.FindCell(scene, cell, spheres, current, loadCells));
-
-        public IReadOnlyList<FindCellResult> FindCellWalk(WalkRequest walk) => [.. Inner.FindCellWalk(walk).Select(rewrite)];
-    }
 }
