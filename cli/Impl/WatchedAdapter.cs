@@ -150,7 +150,9 @@ internal sealed class WatchedAdapter : ICellPhysics, IDisposable
 
     /// <inheritdoc/>
     public IReadOnlyList<FindCellResult> FindCellWalk(WalkRequest walk) =>
-        Call("find_cell_walk", () => inner.FindCellWalk(walk)); // a port whose array lives for a walk (ace-keeps-stale-cells) answers it whole
+        inner.Indoor.AceKeepsStaleCells
+            ? Call("find_cell_walk", () => inner.FindCellWalk(walk)) // its array lives for the walk (facts §7 #6): asked whole
+            : WalkThread.AskEach(this, walk); // query by query, each watched with its own timeout
 
     /// <inheritdoc/>
     public void Dispose()
