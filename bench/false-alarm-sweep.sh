@@ -9,7 +9,8 @@
 #   bench/false-alarm-sweep.sh --seeds 20 --cases 1000 --modes current-first,ace   # a smaller in-process budget
 #
 # Modes (what the reference declares, and the gate is told): retail; current-first (--pick current-first); ace
-# (--fidelity ace); double (--fidelity double); ace-current-first (both). A served run serves the same mode
+# (--fidelity ace); double (--fidelity double); ace-current-first (both); any one switch by its name
+# (ace-keeps-stale-cells, ace-early-return, …, drop-unloaded-land-cells, reframe-transit). A served run serves the same mode
 # (`acphys serve --pick ... --fidelity ...`), so its hello declares it. Served runs use --served-cases cases per
 # invariant (default 300) to keep the sweep to minutes; in-process runs the full pr budget unless --cases is given.
 #
@@ -28,7 +29,7 @@ cases=""
 modes="retail,current-first,ace,double,ace-current-first"
 out="/tmp/acphys-false-alarms"
 
-usage() { sed -n '2,19p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; }
+usage() { sed -n '2,20p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; }
 while [[ $# -gt 0 ]]; do
   case "$1" in
     --seeds) seeds="$2"; shift 2 ;;
@@ -68,6 +69,7 @@ flags_of() {
     ace) echo "--fidelity ace" ;;
     double) echo "--fidelity double" ;;
     ace-current-first) echo "--pick current-first --fidelity ace" ;;
+    ace-*|drop-unloaded-land-cells|reframe-transit) echo "--fidelity $1" ;; # one declared switch (issue 41)
     *) echo "false-alarm-sweep: unknown mode $1" >&2; exit 2 ;;
   esac
 }

@@ -27,4 +27,16 @@ public sealed class IntendedFindingTests
         Assert.Contains("verify: 1 invariant, 1 passed, 0 failed, 0 not tested", run.Out, StringComparison.Ordinal);
         Assert.DoesNotContain("capabilities:", run.Out, StringComparison.Ordinal); // every op offered, find_cell_transition included
     }
+
+    [Theory(DisplayName = "INTENDED-PROVED (issue 41): a planted fault served under a declaration still fails, and its intended line names no declaration but says what differs")]
+    [InlineData("close-is-outside", "ace")]
+    [InlineData("snapshot-closure", "ace-keeps-stale-cells")]
+    [InlineData("touch-inclusive", "double")]
+    public void AServedFaultIsNeverIntended(string fault, string declaration)
+    {
+        var run = Acphys.Run(["verify", "--impl-cmd", $"{Acphys.ServeCommand} --fault {fault} --fidelity {declaration}", "--only", "FIND-CELL-CONFORMANCE,FIND-CELL-QUERY-CONFORMANCE", "--cases", "300", "--timeout", "60", "--max-classes", "1"]);
+        Assert.True(run.Exit == 1, run.ToString());
+        Assert.DoesNotContain("your answers are the reference's if you declare", run.Out, StringComparison.Ordinal);
+        Assert.Contains("  intended   no: ", run.Out, StringComparison.Ordinal);
+    }
 }

@@ -23,18 +23,28 @@ internal static class ReplayCommand
             Description = "Check against the reference with this planted fault switched on (see: acphys faults).",
             HelpName = "FAULT",
         };
+        var pick = new Option<string>("--pick")
+        {
+            Description = "Check against the reference with this pick policy: retail or current-first (default: the case file's mode, else retail).",
+            HelpName = "POLICY",
+        };
+        var fidelity = new Option<string>("--fidelity")
+        {
+            Description = "Check against the reference with these documented deviations declared, comma-separated (default: the case file's mode, else retail).",
+            HelpName = "NAMES",
+        };
         var implOptions = new ImplementationOptions();
-        var command = new Command("replay", "Replay a stored case: every invariant on it, and whether it catches the faults it lists.") { file, fault };
+        var command = new Command("replay", "Replay a stored case: every invariant on it, and whether it catches the faults it lists. A case written by verify in a declared mode, pick or fault is judged in that mode.") { file, fault, pick, fidelity };
         foreach (var option in implOptions.All)
         {
             command.Options.Add(option);
         }
 
-        command.SetAction(parse => Guard.Run("replay", () => Run(parse.GetValue(file) ?? string.Empty, parse.GetValue(fault), implOptions.Read(parse))));
+        command.SetAction(parse => Guard.Run("replay", () => Run(parse.GetValue(file) ?? string.Empty, new CaseModeWords(parse.GetValue(fault), parse.GetValue(pick), parse.GetValue(fidelity)), implOptions.Read(parse))));
         return command;
     }
 
-    private static int Run(string path, string? faultId, ImplementationChoice choice)
+    private static int Run(string path, CaseModeWords given, ImplementationChoice choice)
     {
         bool records = DatFolder.IsRecordFolder(path);
         if (Directory.Exists(path) && !records)
@@ -47,30 +57,66 @@ internal static class ReplayCommand
             throw new UsageException($"{(path.Length == 0 ? "''" : path)}: no such file");
         }
 
-        PlantedFault? fault = null;
-        if (faultId is not null)
+        if (!records)
         {
-            fault = PlantedFaults.Find(faultId)
-                ?? throw new UsageException($"unknown fault '{faultId}' (known: {string.Join(", ", PlantedFaults.All.Select(f => f.Id))})");
+            _ = ReplayInputs.For(path); // a kind replay does not know is a usage error before the file is read
         }
 
+        if (choice.IsExternal && given.Any)
+        {
+            throw new UsageException("--fault, --pick and --fidelity configure the bundled reference; they do not apply to --impl / --impl-cmd (an implementation declares its mode in hello)");
+        }
+
+        var entry = CaseFiles.Read(path);
         if (!choice.IsExternal)
         {
-            ICellPhysics impl = fault is null ? ReferenceAdapter.Instance : PlantedFaults.Create(fault.Id);
-            return records ? ReplayPrinter.Replay(CaseFiles.Read(path), path, new ReplayTarget(impl, fault)) : ReplayInputs.For(path).Replay(path, new ReplayTarget(impl, fault));
+            // Issue 41: the mode the case was found in (verify --pick / --fidelity / --fault) judges it again, unless given here.
+            var mode = given.Any ? given : CaseModeWords.Of(entry.Mode);
+            if (!given.Any && entry.Mode is { IsRetail: false } stored)
+            {
+                Console.Error.WriteLine($"replay: judged in the mode the case was found in: {string.Join(' ', stored.Words())}");
+            }
+
+            var (impl, fault) = mode.Reference();
+            return ReplayPrinter.Replay(entry, path, new ReplayTarget(impl, fault));
         }
 
-        if (fault is not null)
+        if (entry.Mode is { IsRetail: false } ignored)
         {
-            throw new UsageException("--fault configures the bundled reference; it does not apply to --impl / --impl-cmd");
+            Console.Error.WriteLine($"replay: the case was found on the bundled reference in mode {string.Join(' ', ignored.Words())}; the implementation is judged in the mode it declares");
         }
 
-        var entry = records ? CaseFiles.Read(path) : null;
-        var input = records ? null : ReplayInputs.For(path);
         var (external, owned) = choice.Open(line => Console.Error.WriteLine("[impl] " + line));
         using (owned)
         {
-            return entry is not null ? ReplayPrinter.Replay(entry, path, new ReplayTarget(external, null)) : input!.Replay(path, new ReplayTarget(external, null));
+            return ReplayPrinter.Replay(entry, path, new ReplayTarget(external, null));
+        }
+    }
+
+    // The --fault, --pick and --fidelity words of a replay, given or read from the case file.
+    private sealed record CaseModeWords(string? Fault, string? Pick, string? Fidelity)
+    {
+        public bool Any => Fault is not null || Pick is not null || Fidelity is not null;
+
+        public static CaseModeWords Of(AcPhys.Spec.Corpus.CaseMode? mode) =>
+            mode is null ? new(null, null, null) : new(mode.Fault, mode.Pick, mode.Fidelity.Count == 0 ? null : string.Join(',', mode.Fidelity));
+
+        public (ICellPhysics Impl, PlantedFault? Fault) Reference()
+        {
+            if (!PickNames.TryParse(Pick, out var policy))
+            {
+                throw new UsageException($"unknown pick policy '{Pick}' (known: retail, current-first)");
+            }
+
+            var fidelity = ReferenceChoice.ParseFidelity(Fidelity);
+            if (Fault is null)
+            {
+                return (ReferenceChoice.Create(policy, fidelity), null);
+            }
+
+            var planted = PlantedFaults.Find(Fault)
+                ?? throw new UsageException($"unknown fault '{Fault}' (known: {string.Join(", ", PlantedFaults.All.Select(f => f.Id))})");
+            return (ReferenceChoice.Declared(PlantedFaults.Create(planted.Id), policy, fidelity), planted);
         }
     }
 }

@@ -93,11 +93,6 @@ internal static class ServeCommand
         ICellPhysics impl = Impl.ReferenceChoice.Create(pick, fidelity);
         if (faultId is not null)
         {
-            if (fidelity != default)
-            {
-                throw new UsageException("--fault serves a planted fault in retail mode; it does not combine with --fidelity");
-            }
-
             string[] ids = faultId.Split(',', StringSplitOptions.RemoveEmptyEntries | StringSplitOptions.TrimEntries);
             foreach (string id in ids.Length == 0 ? [faultId] : ids)
             {
@@ -109,7 +104,7 @@ internal static class ServeCommand
 
             try
             {
-                impl = ids.Length == 1 ? PlantedFaults.Create(ids[0]) : PlantedFaults.Combine(ids);
+                impl = Impl.ReferenceChoice.Declared(ids.Length == 1 ? PlantedFaults.Create(ids[0]) : PlantedFaults.Combine(ids), pick, fidelity); // declared: the fault's answers, that mode declared
             }
             catch (ArgumentException e)
             {

@@ -66,4 +66,7 @@ internal sealed class AnnouncedRetail(ICellPhysics inner) : ICellPhysics
 
     /// <inheritdoc/>
     public FindCellResult FindCell(Scene? scene, CellId cell, IReadOnlyList<Sphere> spheres, CellId current, bool loadCells) => inner.FindCell(scene, cell, spheres, current, loadCells);
+
+    /// <inheritdoc/>
+    public IReadOnlyList<FindCellResult> FindCellWalk(WalkRequest walk) => inner.FindCellWalk(walk);
 }

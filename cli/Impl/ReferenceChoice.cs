@@ -18,6 +18,33 @@ internal static class ReferenceChoice
             : throw new UsageException($"unknown fidelity '{AcPhys.Spec.Protocol.Wire.Brief(bad!, 60)}' (known: {string.Join(", ", FidelityNames.Known)})");
     }
 
+    /// <summary>Returns the <c>--fidelity</c> names that choose a fidelity again: <c>ace</c> for every ACE difference, else one name per switch.</summary>
+    /// <param name="fidelity">The declared deviations.</param>
+    /// <returns>The names, empty for retail.</returns>
+    public static IReadOnlyList<string> FidelityWords((IndoorFidelity Indoor, OutdoorFidelity Outdoor) fidelity)
+    {
+        if ((fidelity.Indoor with { ReframeTransit = false }) != IndoorFidelity.Ace)
+        {
+            return FidelityNames.Names(fidelity.Indoor, fidelity.Outdoor);
+        }
+
+        var words = new List<string> { FidelityNames.Ace };
+        words.AddRange(FidelityNames.Names(IndoorFidelity.Retail with { ReframeTransit = fidelity.Indoor.ReframeTransit }, fidelity.Outdoor));
+        return words;
+    }
+
+    /// <summary>Returns a planted fault (or any implementation) declaring <c>--pick</c> and <c>--fidelity</c>: retail and no deviation keep its own declaration.</summary>
+    /// <param name="impl">The faulty implementation.</param>
+    /// <param name="pick">The pick given.</param>
+    /// <param name="fidelity">The deviations given.</param>
+    /// <returns>The implementation under that declaration.</returns>
+    public static ICellPhysics Declared(ICellPhysics impl, PickPolicy pick, (IndoorFidelity Indoor, OutdoorFidelity Outdoor) fidelity) =>
+        AcPhys.Spec.Faults.DeclaredFault.Declaring(
+            impl,
+            pick == PickPolicy.CurrentFirst ? pick : null,
+            fidelity == default ? null : fidelity.Indoor,
+            fidelity == default ? null : fidelity.Outdoor);
+
     /// <summary>Returns the reference adapter for a pick and a fidelity.</summary>
     /// <param name="pick">The pick policy.</param>
     /// <param name="fidelity">The declared deviations.</param>

@@ -149,6 +149,12 @@ internal sealed class WatchedAdapter : ICellPhysics, IDisposable
         Call("find_cell", () => inner.FindCell(cell, origin, spheres, current));
 
     /// <inheritdoc/>
+    public IReadOnlyList<FindCellResult> FindCellWalk(WalkRequest walk) =>
+        inner.Indoor.AceKeepsStaleCells
+            ? Call("find_cell_walk", () => inner.FindCellWalk(walk)) // its array lives for the walk (facts §7 #6): asked whole
+            : WalkThread.AskEach(this, walk); // query by query, each watched with its own timeout
+
+    /// <inheritdoc/>
     public void Dispose()
     {
         stop.Cancel();

@@ -19,7 +19,7 @@ internal static class ReplayLine
     {
         Cases = settings.CasesOverride,
         Sweeps = settings.Implementation.IsProcess && settings.Profile.Exhaustive,
-        Fault = settings.Fault?.Id,
+        Mode = settings.Mode,
         Implementation = [.. settings.Implementation.Words()],
     };
 

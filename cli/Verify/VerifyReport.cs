@@ -298,11 +298,7 @@ internal sealed class VerifyReport(VerifySettings settings, ICellPhysics impl)
             words.AddRange(["--except", string.Join(',', settings.Except)]);
         }
 
-        if (settings.Fault is not null)
-        {
-            words.AddRange(["--fault", settings.Fault.Id]);
-        }
-
+        words.AddRange(settings.Mode.Words());
         words.AddRange(settings.Implementation.Words());
         return string.Join(' ', words.Select(ReplayLine.Quote));
     }

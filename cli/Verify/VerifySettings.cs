@@ -41,6 +41,12 @@ internal sealed record VerifySettings
     /// <summary>Gets the documented deviations of the bundled reference (<c>--fidelity</c>; retail by default).</summary>
     public (AcPhys.Core.IndoorFidelity Indoor, AcPhys.Core.OutdoorFidelity Outdoor) Fidelity { get; init; }
 
+    /// <summary>Gets the mode of the bundled reference as a case file stores it and a replay line chooses it again (issue 41).</summary>
+    public Spec.Corpus.CaseMode Mode => new(
+        Pick == AcPhys.Core.PickPolicy.CurrentFirst ? Spec.Adapters.PickNames.Of(Pick) : null,
+        Impl.ReferenceChoice.FidelityWords(Fidelity),
+        Fault?.Id);
+
     /// <summary>Gets the implementation under test (the bundled reference unless <c>--impl</c> / <c>--impl-cmd</c>).</summary>
     public Impl.ImplementationChoice Implementation { get; init; } = Impl.ImplementationChoice.Reference;
 

@@ -16,7 +16,11 @@ namespace AcPhys.Spec.Adapters;
 public sealed class OpsOffered(ICellPhysics inner, Op mask) : ICellPhysics
 {
     /// <inheritdoc/>
-    public string Name => inner.Name + " (without " + string.Join(", ", OpNames.Names(inner.Ops & ~mask & Op.All)) + ")";
+    public string Name =>
+        inner.Name
+        + ((inner.Ops & ~mask & Op.All) == 0 ? string.Empty : " (without " + string.Join(", ", OpNames.Names(inner.Ops & ~mask & Op.All)) + ")")
+        + (Pick == inner.Pick && Indoor == inner.Indoor && Outdoor == inner.Outdoor ? string.Empty
+            : " declaring " + string.Join("+", FidelityNames.Names(Indoor, Outdoor).Prepend(PickNames.Of(Pick))));
 
     /// <inheritdoc/>
     public Op Ops => inner.Ops & mask;

@@ -12,6 +12,9 @@ public sealed class ReferenceAdapter(PickPolicy pick = PickPolicy.Retail, PartsF
     [ThreadStatic]
     private static CellArray? scratch;
 
+    // The array one walk's scene queries share under ace-keeps-stale-cells (see FindCellWalk); null: a fresh array per query.
+    private CellArray? walkArray;
+
     /// <summary>Gets the shared retail instance (the adapter is stateless).</summary>
     public static ReferenceAdapter Instance { get; } = new();
 
@@ -25,7 +28,7 @@ public sealed class ReferenceAdapter(PickPolicy pick = PickPolicy.Retail, PartsF
     public string Name => (pick == PickPolicy.Retail ? "reference" : "reference(current-first)")
         + (outdoor.Precision == OutdoorPrecision.Double ? "(double)" : string.Empty)
         + (partsFidelity.SameBlockGuard ? "+ace-same-block-guard" : string.Empty) + (partsFidelity.EveryPartAnchors ? "+ace-every-part-anchors" : string.Empty)
-        + (Indoor == default ? string.Empty : "+indoor" + Indoor.ToString()[nameof(IndoorFidelity).Length..]) + (Volumes == VolumeMode.Aabb ? "+aabb" : string.Empty);
+        + string.Concat(FidelityNames.Names(Indoor, default).Select(n => "+" + n)) + (Volumes == VolumeMode.Aabb ? "+aabb" : string.Empty);
 
     /// <inheritdoc/>
     public Op Ops => Op.All;
@@ -101,11 +104,35 @@ public sealed class ReferenceAdapter(PickPolicy pick = PickPolicy.Retail, PartsF
     /// <inheritdoc/>
     public FindCellResult FindCell(Scene? scene, CellId cell, IReadOnlyList<Sphere> spheres, CellId current, bool loadCells)
     {
-        var array = scratch ??= new CellArray();
+        var array = walkArray ?? (scratch ??= new CellArray());
+        if (walkArray is null)
+        {
+            array.Reset(); // a query outside a walk starts from an empty array, stale cells declared or not
+        }
+
         var built = scene is null ? CellScene.Open : SceneBuild.Build(scene, Volumes);
         var result = SceneQuery.FindCellList(array, built, cell, [.. spheres], current, new CellQueryOptions(pick, true, loadCells, Indoor));
         return new FindCellResult(array.ToIdArray(), result.Containing) { HitsInteriorCell = result.HitsInteriorCell, Loaded = LoadedFlags(array) };
     }
+
+    /// <summary>
+    /// Answers a whole walk. Under ace-keeps-stale-cells the walk's queries share one array that is never cleared (facts
+    /// §7 #6: ACE's Transition owns one fresh array, TR:604-611, so stale cells accumulate across its steps): the life of
+    /// the stale array is one walk, and every walk starts from an empty one (docs/conformance.md, "Declared modes").
+    /// </summary>
+    /// <param name="walk">The walk.</param>
+    /// <returns>One answer per query.</returns>
+    public IReadOnlyList<FindCellResult> FindCellWalk(WalkRequest walk) =>
+        WalkThread.AskEach(Indoor.AceKeepsStaleCells && walkArray is null ? WalkSession() : this, walk);
+
+    /// <summary>
+    /// Returns this reference with an array of its own that its scene queries share until it is dropped: what one walk
+    /// asks an implementation declaring ace-keeps-stale-cells, asked query by query in the same order (the conformance
+    /// invariants follow the queries the tool sent the implementation this way).
+    /// </summary>
+    /// <returns>A new adapter, in this one's mode, with an empty array.</returns>
+    public ReferenceAdapter WalkSession() =>
+        new(pick, partsFidelity, outdoor) { Indoor = Indoor, Volumes = Volumes, walkArray = new CellArray() };
 
     private static bool[] LoadedFlags(CellArray array)
     {

@@ -23,6 +23,9 @@ public sealed record CorpusEntry
     /// <summary>Gets the seed that found it, when generated.</summary>
     public string? Seed { get; init; }
 
+    /// <summary>Gets the mode the bundled reference ran in when the case was found (field <c>mode</c>), or null for retail.</summary>
+    public CaseMode? Mode { get; init; }
+
     /// <summary>Gets the planted faults this case must expose.</summary>
     public IReadOnlyList<string> Catches { get; init; } = [];
 

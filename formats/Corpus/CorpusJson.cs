@@ -47,6 +47,11 @@ public static class CorpusJson
                 w.WriteString("seed", entry.Seed);
             }
 
+            if (entry.Mode is { IsRetail: false } mode)
+            {
+                WriteMode(w, mode);
+            }
+
             w.WriteStartArray("catches");
             foreach (var f in entry.Catches)
             {
@@ -153,7 +158,8 @@ public static class CorpusJson
                 }
             }
 
-            var header = new CorpusEntry { Title = title, Invariant = invariant, FoundBy = foundBy, Seed = seed, Catches = catches };
+            var mode = root.TryGetProperty("mode", out var m) ? ReadMode(m, source) : null;
+            var header = new CorpusEntry { Title = title, Invariant = invariant, FoundBy = foundBy, Seed = seed, Mode = mode, Catches = catches };
             if (kind == "scene-walk")
             {
                 Scenes.Scene scene;
@@ -224,6 +230,64 @@ public static class CorpusJson
         return Read(text, path);
     }
 
+    // The mode: {"pick": "current-first", "fidelity": ["ace-keeps-stale-cells"], "fault": "trunc-floor"}, each optional.
+    private static void WriteMode(Utf8JsonWriter w, CaseMode mode)
+    {
+        w.WriteStartObject("mode");
+        if (mode.Pick is not null)
+        {
+            w.WriteString("pick", mode.Pick);
+        }
+
+        if (mode.Fidelity.Count > 0)
+        {
+            w.WriteStartArray("fidelity");
+            foreach (string name in mode.Fidelity)
+            {
+                w.WriteStringValue(name);
+            }
+
+            w.WriteEndArray();
+        }
+
+        if (mode.Fault is not null)
+        {
+            w.WriteString("fault", mode.Fault);
+        }
+
+        w.WriteEndObject();
+    }
+
+    private static CaseMode ReadMode(JsonElement m, string source)
+    {
+        Require(m.ValueKind == JsonValueKind.Object, source, "$.mode", "expected an object with \"pick\", \"fidelity\" and \"fault\", each optional");
+        foreach (var property in m.EnumerateObject())
+        {
+            Require(property.Name is "pick" or "fidelity" or "fault", source, "$.mode." + Values.InputQuote.Brief(property.Name), "unknown field (known: pick, fidelity, fault)");
+        }
+
+        string? pick = OptStr(m, "pick", source, "$.mode");
+        Require(pick is null || (Adapters.PickNames.TryParse(pick, out var policy) && policy == PickPolicy.CurrentFirst), source, "$.mode.pick", "expected \"current-first\" (retail is the default and is not stored)");
+        var names = new List<string>();
+        if (m.TryGetProperty("fidelity", out var f))
+        {
+            Require(f.ValueKind == JsonValueKind.Array && f.GetArrayLength() is > 0 and <= 16, source, "$.mode.fidelity", "expected an array of 1 to 16 deviation names");
+            int i = 0;
+            foreach (var item in f.EnumerateArray())
+            {
+                Require(item.ValueKind == JsonValueKind.String, source, $"$.mode.fidelity[{i}]", "expected a string");
+                names.Add(Text(item, source, $"$.mode.fidelity[{i}]"));
+                i++;
+            }
+
+            Require(Adapters.FidelityNames.TryParse(names, out _, out _, out string? unknown), source, "$.mode.fidelity", $"unknown deviation \"{Values.InputQuote.Brief(unknown ?? string.Empty)}\" (known: {string.Join(", ", Adapters.FidelityNames.Known)})");
+        }
+
+        string? fault = OptStr(m, "fault", source, "$.mode");
+        Require(fault is null || fault.Length is > 0 and <= 100, source, "$.mode.fault", "expected a planted fault id (1 to 100 characters)");
+        return new CaseMode(pick, names, fault);
+    }
+
     /// <summary>Writes one sphere as <c>{"x","y","z","r"}</c>: a query's sphere (centre) or a walk's body sphere (offset).</summary>
     internal static void WriteBall(Utf8JsonWriter w, System.Numerics.Vector3 at, float radius)
     {
@@ -274,15 +338,15 @@ public static class CorpusJson
         return Text(e, source, $"{at}.{name}");
     }
 
-    private static string? OptStr(JsonElement parent, string name, string source)
+    private static string? OptStr(JsonElement parent, string name, string source, string at = "$")
     {
         if (!parent.TryGetProperty(name, out var e) || e.ValueKind == JsonValueKind.Null)
         {
             return null;
         }
 
-        Require(e.ValueKind == JsonValueKind.String, source, "$." + name, "expected a string");
-        return Text(e, source, "$." + name);
+        Require(e.ValueKind == JsonValueKind.String, source, $"{at}.{name}", "expected a string");
+        return Text(e, source, $"{at}.{name}");
     }
 
     /// <summary>

@@ -143,6 +143,13 @@ public sealed class ProcessAdapter : ICellPhysics, IDisposable
                     throw new WireException($"unknown frame \"{Wire.Brief(frame, 40)}\" (known: block, world)");
                 }
 
+                if (indoor.AceKeepsStaleCells && SceneQueryKinds.OffersScenes(ops) && ((ops & Op.FindCellWalk) == 0 || frame == WorldFrame.Name))
+                {
+                    // The stale array lives for one walk (facts §7 #6; docs/conformance.md, "Declared modes"): a port asked
+                    // query by query cannot tell where a walk begins, so its answers could not be judged.
+                    throw new AdapterFailureException($"'{commandLine}' declares ace-keeps-stale-cells but is asked query by query ({(frame == WorldFrame.Name ? "world frame" : "no find_cell_walk")}): the stale array lives for one walk, so a port declaring it must announce find_cell_walk in the block frame (docs/conformance.md, \"Declared modes\")");
+                }
+
                 return new ProcessAdapter(child, options.Timeout, name, ops, pick, unknown) { Indoor = indoor, Outdoor = outdoor, InWorldFrame = frame == WorldFrame.Name };
             }
             catch (WireException e)

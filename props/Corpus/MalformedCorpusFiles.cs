@@ -36,6 +36,14 @@ public sealed class MalformedCorpusFiles
         { Good.Replace("[1,2]", "[1]", StringComparison.Ordinal), "$.case.lcoord: expected [x, y]" },
         { Good.Replace("[1,2]", "[1.5,2]", StringComparison.Ordinal), "$.case.lcoord[0]: expected a 32-bit integer" },
         { Good.Replace("[1,2]", "[1,99999999999]", StringComparison.Ordinal), "$.case.lcoord[1]: expected a 32-bit integer" },
+        { Good.Replace("\"catches\":[]", "\"mode\":[],\"catches\":[]", StringComparison.Ordinal), "$.mode: expected an object" }, // issue 41: the mode a case was found in
+        { Good.Replace("\"catches\":[]", "\"mode\":{\"fidelty\":[]},\"catches\":[]", StringComparison.Ordinal), "$.mode.fidelty: unknown field (known: pick, fidelity, fault)" },
+        { Good.Replace("\"catches\":[]", "\"mode\":{\"pick\":\"retail\"},\"catches\":[]", StringComparison.Ordinal), "$.mode.pick: expected \"current-first\"" },
+        { Good.Replace("\"catches\":[]", "\"mode\":{\"pick\":1},\"catches\":[]", StringComparison.Ordinal), "$.mode.pick: expected a string" },
+        { Good.Replace("\"catches\":[]", "\"mode\":{\"fidelity\":[]},\"catches\":[]", StringComparison.Ordinal), "$.mode.fidelity: expected an array of 1 to 16 deviation names" },
+        { Good.Replace("\"catches\":[]", "\"mode\":{\"fidelity\":[2]},\"catches\":[]", StringComparison.Ordinal), "$.mode.fidelity[0]: expected a string" },
+        { Good.Replace("\"catches\":[]", "\"mode\":{\"fidelity\":[\"ace-stale\"]},\"catches\":[]", StringComparison.Ordinal), "$.mode.fidelity: unknown deviation \"ace-stale\"" },
+        { Good.Replace("\"catches\":[]", "\"mode\":{\"fault\":\"\"},\"catches\":[]", StringComparison.Ordinal), "$.mode.fault: expected a planted fault id" },
         { Good.Replace("\"kind\":\"land\",", "\"kind\":\"land\",\"kind\":\"walk\",", StringComparison.Ordinal), "$.kind: duplicate key \"kind\"" }, // once "$.walk: missing"
         { Good.Replace("\"x\":150", "\"x\":150,\"x\":151", StringComparison.Ordinal), "$.case.x: duplicate key \"x\"" }, // once the last won
         { Good.Replace("\"title\":\"t\"", "\"\\ud800\":1,\"title\":\"t\"", StringComparison.Ordinal), "$.<name>: not valid text" }, // once InvalidOperationException from the duplicate-key search
@@ -86,6 +94,22 @@ public sealed class MalformedCorpusFiles
                     && BitConverter.SingleToInt32Bits(back.X) == BitConverter.SingleToInt32Bits(c.X)
                     && BitConverter.SingleToInt32Bits(back.Y) == BitConverter.SingleToInt32Bits(c.Y);
             });
+
+    [Theory(DisplayName = "The mode a case was found in (pick, fidelity, fault) is written and read back unchanged; retail writes no mode field (issue 41)")]
+    [InlineData("current-first", "", null)]
+    [InlineData(null, "ace-keeps-stale-cells", null)]
+    [InlineData(null, "ace,double", "close-is-outside")]
+    [InlineData(null, "", null)]
+    public void ModeRoundTrips(string? pick, string fidelity, string? fault)
+    {
+        var mode = new CaseMode(pick, fidelity.Length == 0 ? [] : fidelity.Split(','), fault);
+        var entry = new CorpusEntry { Title = "t", FoundBy = "verify", Mode = mode, Case = new LandCase(new AcPhys.Core.CellId(0xA9B40031), 1, 2, new AcPhys.Core.Lcoord(1, 2)) };
+        string text = CorpusJson.Write(entry);
+        var back = CorpusJson.Read(text, "rt");
+        Assert.Equal(mode.IsRetail ? null : mode, back.Mode);
+        Assert.Equal(!mode.IsRetail, text.Contains("\"mode\"", StringComparison.Ordinal));
+        Assert.NotEqual(FailureFile.NameFor(entry), FailureFile.NameFor(entry with { Mode = new CaseMode("current-first", ["double"], "x") }));
+    }
 
     [Fact(DisplayName = "AtomicFile leaves no temp file behind and replaces the target whole")]
     public void AtomicWrite()

@@ -63,10 +63,18 @@ public sealed class BrokenByDesignTests
     public void RetailExemptsNothing() =>
         Assert.All(InvariantCatalogue.All, i => Assert.Equal(i.WhyNotTestable(Op.All, PickPolicy.Retail), i.WhyNotTestable(ReferenceAdapter.Instance)));
 
-    [Fact(DisplayName = "VISIBILITY under ace: the reason names the switch and the facts section")]
+    [Fact(DisplayName = "PORTAL-TRANSIT under ace: the reason names the switch and the facts section")]
     public void ReasonNamesSwitchAndFacts()
     {
-        string? why = IndoorInvariants.Visibility.WhyNotTestable(DeclaredModes.Declaring(FidelityNames.Ace, PickPolicy.Retail));
-        Assert.Equal("a retail statement the declared ace-keeps-stale-cells breaks by design (facts §7 #6, §4 step 1: the array is not cleared between calls)", why);
+        string? why = IndoorInvariants.PortalTransit.WhyNotTestable(DeclaredModes.Declaring(FidelityNames.Ace, PickPolicy.Retail));
+        Assert.Equal("a retail statement the declared ace-keeps-stale-cells breaks by design (facts §7 #6, §4 step 1: the array is not cleared between the queries of a walk)", why);
+    }
+
+    [Fact(DisplayName = "VISIBILITY, SCENE-TRANSLATION, NEVER-NULL under ace-keeps-stale-cells: judged (the stale array lives for one walk and breaks none of them; issue 41)")]
+    public void StaleCellsExemptOnlyWhatTheyBreak()
+    {
+        var stale = DeclaredModes.Declaring("ace-keeps-stale-cells", PickPolicy.Retail);
+        Assert.Null(IndoorInvariants.Visibility.WhyNotTestable(stale));
+        Assert.Equal(["PORTAL-TRANSIT", "NO-TUNNEL", "SCENE-SOUNDNESS", "ENV-CANDIDATE-JUSTIFIED"], BrokenByDesign.Exempted.Where(e => e.Switch == "ace-keeps-stale-cells").Select(e => e.InvariantId));
     }
 }

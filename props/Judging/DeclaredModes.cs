@@ -22,9 +22,12 @@ internal static class DeclaredModes
     /// <returns>The undeclared port.</returns>
     public static ICellPhysics DeclaringRetail(ICellPhysics inner) => new DeclaresRetail(inner);
 
-    private sealed class DeclaresRetail(ICellPhysics inner) : Forwarding(inner)
+    private sealed class DeclaresRetail(ICellPhysics inner) : Forwarding(inner), ICellPhysics
     {
         public override IndoorFidelity Indoor => IndoorFidelity.Retail;
+
+        // A whole walk answered as the inner port answers it (its stale array lives for the walk).
+        public IReadOnlyList<FindCellResult> FindCellWalk(WalkRequest walk) => Inner.FindCellWalk(walk);
 
         public override OutdoorFidelity Outdoor => OutdoorFidelity.Retail;
     }

@@ -14,9 +14,12 @@ public static class FailureFile
     /// <param name="violation">The violation (its <see cref="Violation.Case"/> must be set).</param>
     /// <param name="foundBy">props, fuzz, …</param>
     /// <param name="seed">The seed that found it.</param>
+    /// <param name="mode">The mode the bundled reference ran in (pick, fidelity, fault), stored so a replay judges the same way; null for retail.</param>
     /// <returns>The entry, or null.</returns>
-    public static CorpusEntry? EntryFor(Violation violation, string foundBy, string? seed) =>
-        CorpusEntry.From(violation.Case, $"{violation.InvariantId}: {violation.Message}", violation.InvariantId, foundBy, seed);
+    public static CorpusEntry? EntryFor(Violation violation, string foundBy, string? seed, CaseMode? mode = null) =>
+        CorpusEntry.From(violation.Case, $"{violation.InvariantId}: {violation.Message}", violation.InvariantId, foundBy, seed) is { } entry
+            ? entry with { Mode = mode is { IsRetail: false } ? mode : null }
+            : null;
 
     /// <summary>Returns the file name for an entry: the invariant ID and the first 8 hex digits of the SHA-256 of its case.</summary>
     /// <param name="entry">The entry.</param>
@@ -33,10 +36,11 @@ public static class FailureFile
     /// <param name="folder">The folder (created if missing).</param>
     /// <param name="foundBy">props, fuzz, …</param>
     /// <param name="seed">The seed that found it.</param>
+    /// <param name="mode">The mode the bundled reference ran in, or null for retail.</param>
     /// <returns>The path written.</returns>
-    public static string? Write(Violation violation, string folder, string foundBy, string? seed)
+    public static string? Write(Violation violation, string folder, string foundBy, string? seed, CaseMode? mode = null)
     {
-        var entry = EntryFor(violation, foundBy, seed);
+        var entry = EntryFor(violation, foundBy, seed, mode);
         if (entry is null)
         {
             return null;

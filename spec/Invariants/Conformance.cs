@@ -29,11 +29,22 @@ public static class Conformance
 
     /// <summary>Returns the reference core in the mode the implementation declares.</summary>
     /// <param name="impl">The implementation.</param>
-    /// <returns>The reference. With ACE's stale cells declared, the reference resets its array (the comparison is then a superset test).</returns>
+    /// <returns>The reference. One query asked of it starts from an empty array, ACE's stale cells declared or not (their
+    /// array lives for one walk: <see cref="WalkReferenceFor"/>).</returns>
     public static ReferenceAdapter ReferenceFor(ICellPhysics impl)
     {
         return Reference(impl, impl.Outdoor);
     }
+
+    /// <summary>
+    /// Returns the reference that answers one walk's queries when they are asked of it in the order the implementation was
+    /// asked them: with ace-keeps-stale-cells declared, a walk session of the declared reference (one array for the walk,
+    /// never cleared: facts §7 #6), so the comparison stays exact; otherwise the declared reference itself.
+    /// </summary>
+    /// <param name="impl">The implementation.</param>
+    /// <returns>A reference for one walk; ask it every query of the walk once, in order.</returns>
+    public static ReferenceAdapter WalkReferenceFor(ICellPhysics impl) =>
+        impl.Indoor.AceKeepsStaleCells ? ReferenceFor(impl).WalkSession() : ReferenceFor(impl);
 
     /// <summary>
     /// Returns the reference in the declared mode but the other outdoor arithmetic (double for a float32 implementation,
@@ -119,9 +130,9 @@ public static class Conformance
         yield return [.. spheres.Select(s => new Sphere(s.Center, MathF.Max(0, s.Radius - step)))];
     }
 
-    // The reference with the implementation's pick and indoor fidelity (its array reset: see ReferenceFor) and an outdoor fidelity.
+    // The reference with the implementation's pick and indoor fidelity and an outdoor fidelity.
     private static ReferenceAdapter Reference(ICellPhysics impl, OutdoorFidelity outdoor) =>
-        References.GetOrAdd((impl.Pick, impl.Indoor with { AceKeepsStaleCells = false }, outdoor), k => new ReferenceAdapter(k.Item1, outdoor: k.Item3) { Indoor = k.Item2 });
+        References.GetOrAdd((impl.Pick, impl.Indoor, outdoor), k => new ReferenceAdapter(k.Item1, outdoor: k.Item3) { Indoor = k.Item2 });
 
     /// <summary>
     /// Compares a find_cell answer with the reference's: the candidates in insertion order with their load-hint flags,
@@ -129,38 +140,27 @@ public static class Conformance
     /// </summary>
     /// <param name="got">The implementation's answer.</param>
     /// <param name="want">The reference's answer.</param>
-    /// <param name="superset">Compare membership only, the implementation's holding the reference's (ACE's stale cells declared).</param>
     /// <returns>Null when they agree, else what differs, with both lists.</returns>
-    public static string? Difference(FindCellResult got, FindCellResult want, bool superset = false)
+    public static string? Difference(FindCellResult got, FindCellResult want)
     {
         string Lists() => $"got [{Show(got)}] → {Cell(got.Containing)}, reference [{Show(want)}] → {Cell(want.Containing)}";
-        if (superset)
+        int n = Math.Min(got.Cells.Count, want.Cells.Count);
+        for (int i = 0; i < n; i++)
         {
-            // Stale entries of earlier calls make the array and the pick depend on history (facts §7 #6): only
-            // membership is compared.
-            var missing = want.Cells.Where(c => !got.Cells.Contains(c)).ToList();
-            return missing.Count > 0 ? $"candidate {missing[0]} is missing (stale cells declared: compared as sets): {Lists()}" : null;
+            if (got.Cells[i] != want.Cells[i])
+            {
+                return $"candidates differ at position {i}: {Lists()}";
+            }
+
+            if (got.Loaded is { } gl && want.Loaded is { } wl && gl[i] != wl[i])
+            {
+                return $"candidate {i} ({got.Cells[i]}) is {(gl[i] ? "a loaded cell" : "a load hint")} but the reference has {(wl[i] ? "a loaded cell" : "a load hint")}: {Lists()}";
+            }
         }
-        else
+
+        if (got.Cells.Count != want.Cells.Count)
         {
-            int n = Math.Min(got.Cells.Count, want.Cells.Count);
-            for (int i = 0; i < n; i++)
-            {
-                if (got.Cells[i] != want.Cells[i])
-                {
-                    return $"candidates differ at position {i}: {Lists()}";
-                }
-
-                if (got.Loaded is { } gl && want.Loaded is { } wl && gl[i] != wl[i])
-                {
-                    return $"candidate {i} ({got.Cells[i]}) is {(gl[i] ? "a loaded cell" : "a load hint")} but the reference has {(wl[i] ? "a loaded cell" : "a load hint")}: {Lists()}";
-                }
-            }
-
-            if (got.Cells.Count != want.Cells.Count)
-            {
-                return $"candidates differ at position {n} ({(got.Cells.Count > n ? "an extra candidate" : "a missing candidate")}): {Lists()}";
-            }
+            return $"candidates differ at position {n} ({(got.Cells.Count > n ? "an extra candidate" : "a missing candidate")}): {Lists()}";
         }
 
         if (got.Containing != want.Containing)

@@ -79,13 +79,12 @@ public static class ConformanceInvariants
 
         var reference = Conformance.ReferenceFor(impl);
         var alternate = Conformance.AlternateFor(impl);
-        bool superset = impl.Indoor.AceKeepsStaleCells;
         foreach (var current in first.Cells.Take(3).Prepend(CellId.None))
         {
             var got = current.IsNone ? first : impl.FindCell(q.Cell, q.Origin, q.Spheres, current);
             var want = reference.FindCell(q.Cell, q.Origin, q.Spheres, current);
-            if (Conformance.Difference(got, want, superset) is string why
-                && !Conformance.ExcusedOnOpenLand(got, want, alternate.FindCell(q.Cell, q.Origin, q.Spheres, current), p => reference.FindCell(q.Cell, q.Origin, p, current), (a, b) => Conformance.Difference(a, b, superset) is null, q.Spheres))
+            if (Conformance.Difference(got, want) is string why
+                && !Conformance.ExcusedOnOpenLand(got, want, alternate.FindCell(q.Cell, q.Origin, q.Spheres, current), p => reference.FindCell(q.Cell, q.Origin, p, current), (a, b) => Conformance.Difference(a, b) is null, q.Spheres))
             {
                 return Outcome.Violated($"find_cell from {q.Cell}{(q.Spheres.Count == 0 ? $" (no spheres, origin {OutdoorCase.Format(new Sphere(q.Origin, 0))})" : string.Empty)}, current {(current.IsNone ? "none" : current.ToString())}: {why}");
             }
@@ -97,17 +96,17 @@ public static class ConformanceInvariants
     private static Outcome OutdoorWalk(ICellPhysics impl, Walk walk)
     {
         var reference = Conformance.ReferenceFor(impl);
+        var session = Conformance.WalkReferenceFor(impl); // asked every query of the walk once, in order (stale cells declared: one array)
         var alternate = Conformance.AlternateFor(impl);
-        bool superset = impl.Indoor.AceKeepsStaleCells;
         var trace = WalkRunner.Run(impl, walk);
         for (int i = 0; i < trace.Count; i++)
         {
             var s = trace[i];
             var current = i == 0 ? CellId.None : trace[i - 1].Current;
             var got = s.Answer!;
-            var want = reference.FindCell(s.Query.Cell, s.Query.Origin, s.Query.Spheres, current);
-            if (Conformance.Difference(got, want, superset) is string why
-                && !Conformance.ExcusedOnOpenLand(got, want, alternate.FindCell(s.Query.Cell, s.Query.Origin, s.Query.Spheres, current), p => reference.FindCell(s.Query.Cell, s.Query.Origin, p, current), (a, b) => Conformance.Difference(a, b, superset) is null, s.Query.Spheres))
+            var want = session.FindCell(s.Query.Cell, s.Query.Origin, s.Query.Spheres, current);
+            if (Conformance.Difference(got, want) is string why
+                && !Conformance.ExcusedOnOpenLand(got, want, alternate.FindCell(s.Query.Cell, s.Query.Origin, s.Query.Spheres, current), p => reference.FindCell(s.Query.Cell, s.Query.Origin, p, current), (a, b) => Conformance.Difference(a, b) is null, s.Query.Spheres))
             {
                 return Outcome.ViolatedAt(s.Index, $"step {s.Index} (find_cell from {s.Query.Cell}, spheres [{string.Join("; ", s.Query.Spheres.Select(OutdoorCase.Format))}], current {current}): {why}");
             }
@@ -123,20 +122,22 @@ public static class ConformanceInvariants
             return Outcome.VacuousBecause("the implementation offers neither find_cell_scene nor find_cell_transition");
         }
 
-        var reference = Conformance.ReferenceFor(impl);
-        bool superset = impl.Indoor.AceKeepsStaleCells;
         var scene = (impl.Ops & Op.DatRecords) != 0 ? DatRoundTrip.Of(w.Scene) : w.Scene; // what the implementation was sent
         foreach (bool loadCells in SceneQueryKinds.Offered(impl.Ops))
         {
             var trace = SceneWalkRunner.Run(impl, w, loadCells);
+            // Asked every query the implementation was asked in this walk, once and in order: with ace-keeps-stale-cells
+            // declared its array then holds what the implementation's holds (facts §7 #6), so the comparison stays exact.
+            var reference = Conformance.WalkReferenceFor(impl);
             for (int i = 0; i < trace.Count; i++)
             {
                 var s = trace[i];
                 var current = i == 0 ? CellId.None : trace[i - 1].Current;
                 var got = s.Answer!;
                 var want = reference.FindCell(scene, s.Query.Cell, s.Query.Spheres, current, loadCells);
-                if (Conformance.Difference(got, want, superset) is string why
-                    && Conformance.Probes(s.Query.Spheres).All(p => Conformance.Difference(got, reference.FindCell(scene, s.Query.Cell, p, current, loadCells), superset) is not null))
+                int at = i;
+                if (Conformance.Difference(got, want) is string why
+                    && Conformance.Probes(s.Query.Spheres).All(p => Conformance.Difference(got, ProbeAnswer(impl, trace, at, scene, p, loadCells)) is not null))
                 {
                     string kind = loadCells ? "transition" : "static";
                     return Outcome.ViolatedAt(s.Index, $"step {s.Index} ({kind} find_cell from {s.Query.Cell}, spheres [{string.Join("; ", s.Query.Spheres.Select(OutdoorCase.Format))}], current {current}): {why}");
@@ -145,6 +146,19 @@ public static class ConformanceInvariants
         }
 
         return Outcome.Holds;
+    }
+
+    // The declared reference's answer to step i of a scene walk with its spheres moved to a probe: under stale cells the
+    // earlier queries are asked first of a fresh walk session (only when the answers differ, so a conforming walk pays nothing).
+    private static FindCellResult ProbeAnswer(ICellPhysics impl, IReadOnlyList<WalkStep> trace, int i, AcPhys.Spec.Scenes.Scene scene, Sphere[] probe, bool loadCells)
+    {
+        var reference = Conformance.WalkReferenceFor(impl);
+        for (int j = 0; j < i && impl.Indoor.AceKeepsStaleCells; j++)
+        {
+            reference.FindCell(scene, trace[j].Query.Cell, trace[j].Query.Spheres, j == 0 ? CellId.None : trace[j - 1].Current, loadCells);
+        }
+
+        return reference.FindCell(scene, trace[i].Query.Cell, probe, i == 0 ? CellId.None : trace[i - 1].Current, loadCells);
     }
 
     private static Outcome LandDefsCheck(ICellPhysics impl, LandCase c)

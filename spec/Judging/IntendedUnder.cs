@@ -2,46 +2,75 @@ using AcPhys.Core;
 using AcPhys.Spec.Adapters;
 using AcPhys.Spec.Cases;
 using AcPhys.Spec.Invariants;
+using FsCheck;
+using FsCheck.Fluent;
 
 namespace AcPhys.Spec.Judging;
 
 /// <summary>
-/// Which declaration would make a conformance finding intended (issue #29, actionable findings): the failing case is
-/// judged again with the implementation's answers unchanged but one more documented deviation declared (each fidelity
-/// switch, then <c>ace</c>) or the other pick policy, and the first declaration under which the answers equal the
-/// reference's in that mode, on the shrunk case and the original alike, is named. Null when none does: the finding is a plain departure from retail.
+/// Which declaration would make a conformance finding intended (issue #29, actionable findings; proved, issue 41): the
+/// failing case is judged again with the implementation's answers unchanged but one more documented deviation declared
+/// (each fidelity switch, then <c>ace</c>) or the other pick policy. A declaration is named only when the answers equal
+/// the reference's in that mode on the shrunk case, the original case and <see cref="FreshCases"/> fresh cases of the
+/// shrunk case's class; otherwise what differs is said. A port bug that only reorders or only adds cells is never
+/// called intended.
 /// </summary>
 public static class IntendedUnder
 {
+    /// <summary>How many fresh cases of the failing case's class a declaration must also explain.</summary>
+    public const int FreshCases = 12;
+
+    // How many cases are drawn to find the fresh cases of one class.
+    private const int Draws = 600;
+
     /// <summary>Returns the declaration (as a port writes it in <c>hello</c>) under which the case conforms, or null.</summary>
     /// <param name="impl">The implementation, still answering.</param>
     /// <param name="invariantId">The failing invariant.</param>
     /// <param name="cases">Its failing cases: the shrunk one and the original (a shrunk case alone is often explained by
-    /// several switches; a declaration is named only when it explains every one).</param>
+    /// several switches; a declaration is named only when it explains every one, and fresh cases of the shrunk case's class).</param>
     /// <returns>E.g. <c>"fidelity": ["ace-transition-filter"]</c>, or null (also for invariants other than conformance).</returns>
-    public static string? Find(ICellPhysics impl, string invariantId, IReadOnlyList<AnyCase> cases)
+    public static string? Find(ICellPhysics impl, string invariantId, IReadOnlyList<AnyCase> cases) => Explain(impl, invariantId, cases)?.Declaration;
+
+    /// <summary>Explains a conformance finding: the declaration that makes it intended, proved on fresh cases, or what differs.</summary>
+    /// <param name="impl">The implementation, still answering.</param>
+    /// <param name="invariantId">The failing invariant.</param>
+    /// <param name="cases">The shrunk case first, then the original.</param>
+    /// <returns>Null for a case that is not a conformance finding (or does not fail as it is); else the explanation.</returns>
+    public static Intent? Explain(ICellPhysics impl, string invariantId, IReadOnlyList<AnyCase> cases)
     {
         if (cases.Count == 0 || cases.Any(c => Rejudge(impl, invariantId, c) is not { IsViolation: true }))
         {
             return null; // not a conformance finding, or it does not fail as it is
         }
 
+        string? nearest = null;
         foreach (var (label, declared) in Declarations(impl))
         {
             try
             {
-                if (cases.All(c => Rejudge(declared, invariantId, c) is { Verdict: Verdict.Holds }))
+                if (!cases.All(c => Rejudge(declared, invariantId, c) is { Verdict: Verdict.Holds }))
                 {
-                    return label;
+                    continue;
                 }
+
+                var fresh = Fresh(invariantId, cases[0]).ToList();
+                var broken = fresh.Select(c => (Case: c, Outcome: Rejudge(declared, invariantId, c))).FirstOrDefault(x => x.Outcome is { IsViolation: true });
+                if (fresh.Count > 0 && broken.Outcome is null)
+                {
+                    return new Intent(label, null);
+                }
+
+                nearest ??= fresh.Count == 0
+                    ? $"declaring {label} explains this case, but no fresh case of its class was drawn to prove it"
+                    : $"declaring {label} explains this case but not a fresh case of its class: {broken.Outcome!.Value.Message}";
             }
             catch (AdapterFailureException)
             {
-                return null; // the implementation stopped answering: nothing more to learn
+                return new Intent(null, "the implementation stopped answering while the declarations were tried");
             }
         }
 
-        return null;
+        return new Intent(null, nearest ?? "no documented deviation or pick explains these answers: a departure from retail (and from ACE), a port bug or an undocumented difference");
     }
 
     // The implementation's own declaration plus one switch each (indoor switches, double, then ace), then the other pick.
@@ -60,7 +89,29 @@ public static class IntendedUnder
         yield return ($"\"pick\": \"{PickNames.Of(other)}\"", new OpsOffered(impl, impl.Ops) { Pick = other });
     }
 
-    private static Outcome? Rejudge(ICellPhysics impl, string id, AnyCase c) => (id, c) switch
+    // Fresh cases of the shrunk case's class (its domain's primary class), drawn with a fixed seed.
+    private static IEnumerable<AnyCase> Fresh(string id, AnyCase like)
+    {
+        const ulong seed = 0x41_41_41_41UL; // fixed: the same finding is explained the same way every run
+        return (id, like) switch
+        {
+            ("FIND-CELL-CONFORMANCE", AnyCase.WalkInScene sw) => SameClass(AnyWalkDomain.Instance, new AnyWalk(null, sw.Walk), seed).Select(w => w.Indoor is { } i ? (AnyCase)i : w.Outdoor!),
+            ("FIND-CELL-CONFORMANCE", AnyCase.OutdoorWalk w) => SameClass(AnyWalkDomain.Instance, new AnyWalk(w.Walk, null), seed).Select(x => x.Indoor is { } i ? (AnyCase)i : x.Outdoor!),
+            ("FIND-CELL-QUERY-CONFORMANCE" or "OUTSIDE-CELLS-CONFORMANCE", AnyCase.OutdoorQuery q) => SameClass(OutdoorDomain.Instance, q.Query, seed).Select(c => (AnyCase)c),
+            ("LANDDEFS-CONFORMANCE", AnyCase.LandQuery l) => SameClass(LandDomain.Instance, l.Case, seed).Select(c => (AnyCase)c),
+            _ => [],
+        };
+    }
+
+    private static IEnumerable<T> SameClass<T>(ICaseDomain<T> domain, T like, ulong seed)
+    {
+        string cls = domain.Primary(like);
+        return Gen.Sample(domain.Arbitrary.Generator, Draws, new Rnd(seed, 0x9E3779B97F4A7C15UL), 50)
+            .Where(c => domain.Primary(c) == cls)
+            .Take(FreshCases);
+    }
+
+    private static AcPhys.Spec.Invariants.Outcome? Rejudge(ICellPhysics impl, string id, AnyCase c) => (id, c) switch
     {
         ("FIND-CELL-CONFORMANCE", AnyCase.WalkInScene sw) => ConformanceInvariants.FindCell.Check(impl, new AnyWalk(null, sw.Walk)),
         ("FIND-CELL-CONFORMANCE", AnyCase.OutdoorWalk w) => ConformanceInvariants.FindCell.Check(impl, new AnyWalk(w.Walk, null)),
@@ -70,3 +121,8 @@ public static class IntendedUnder
         _ => null,
     };
 }
+
+/// <summary>What <see cref="IntendedUnder.Explain"/> found: the declaration that makes a finding intended, or what differs.</summary>
+/// <param name="Declaration">The declaration as a port writes it in <c>hello</c>, proved on fresh cases; null when none is.</param>
+/// <param name="Differs">When no declaration is named: why (the nearest declaration and the fresh case it fails, or that none explains the answers).</param>
+public sealed record Intent(string? Declaration, string? Differs);

@@ -40,9 +40,14 @@ public sealed record FailureBlock(string Heading, IReadOnlyList<string> Fields, 
         {
             fields.Add(Field(swept ? "case" : "shrunk", v.CaseText));
             fields.Add(Field("message", v.Message));
-            if (Judging.IntendedUnder.Find(impl, r.Invariant.Id, [.. new[] { v.Case, r.Original?.Case }.OfType<AnyCase>().Distinct()]) is string declaration)
+            switch (Judging.IntendedUnder.Explain(impl, r.Invariant.Id, [.. new[] { v.Case, r.Original?.Case }.OfType<AnyCase>().Distinct()]))
             {
-                fields.Add(Field("intended", $"your answers are the reference's if you declare {declaration} in hello (.NET: ICellPhysics Indoor/Outdoor/Pick): a documented deviation (docs/conformance.md, \"Declared modes\")"));
+                case { Declaration: string declaration }:
+                    fields.Add(Field("intended", $"your answers are the reference's if you declare {declaration} in hello (.NET: ICellPhysics Indoor/Outdoor/Pick), on this case, the original and {Judging.IntendedUnder.FreshCases} fresh cases of its class: a documented deviation (docs/conformance.md, \"Declared modes\")"));
+                    break;
+                case { Differs: string differs }:
+                    fields.Add(Field("intended", "no: " + differs));
+                    break;
             }
         }
 
@@ -67,7 +72,7 @@ public sealed record FailureBlock(string Heading, IReadOnlyList<string> Fields, 
         {
             try
             {
-                caseFile = FailureFile.Write(shrunk, failureFolder, finder, r.Seed.ToString());
+                caseFile = FailureFile.Write(shrunk, failureFolder, finder, r.Seed.ToString(), replay.Mode);
             }
             catch (Exception e) when (e is IOException or UnauthorizedAccessException)
             {

@@ -1,5 +1,6 @@
 using System.Globalization;
 using AcPhys.Spec.Adapters;
+using AcPhys.Spec.Corpus;
 
 namespace AcPhys.Spec.Running;
 
@@ -18,8 +19,8 @@ public sealed record ReplayCommand(string Program, Profile Profile)
     /// <summary>Gets a value indicating whether the line says <c>--sweeps</c> (a served implementation swept by request).</summary>
     public bool Sweeps { get; init; }
 
-    /// <summary>Gets the planted fault's ID, when the run checked the reference with one.</summary>
-    public string? Fault { get; init; }
+    /// <summary>Gets the mode the bundled reference ran in (<c>--pick</c>, <c>--fidelity</c>, <c>--fault</c>), or null for retail: every option that changes the verdict (issue 41).</summary>
+    public CaseMode? Mode { get; init; }
 
     /// <summary>Gets the words that name the implementation (<c>--impl PATH</c>, <c>--impl-cmd "..."</c>), empty for the reference.</summary>
     public IReadOnlyList<string> Implementation { get; init; } = [];
@@ -45,11 +46,11 @@ public sealed record ReplayCommand(string Program, Profile Profile)
         return (Build(result, result.Seed, Profile.Name), confirmed);
     }
 
-    /// <summary>Returns the <c>acphys replay</c> line of a written case file.</summary>
+    /// <summary>Returns the <c>acphys replay</c> line of a written case file (the mode is in the file).</summary>
     /// <param name="caseFile">The case file.</param>
     /// <returns>The line.</returns>
     public string ReplayFile(string caseFile) =>
-        string.Join(' ', new[] { Program, "replay", caseFile }.Concat(Fault is null ? [] : ["--fault", Fault]).Concat(Implementation).Select(Quote));
+        string.Join(' ', new[] { Program, "replay", caseFile }.Concat(Implementation).Select(Quote));
 
     /// <summary>Quotes a word for a POSIX shell when it holds anything beyond the plain characters.</summary>
     /// <param name="word">The word.</param>
@@ -94,11 +95,7 @@ public sealed record ReplayCommand(string Program, Profile Profile)
             words.AddRange(["--seed", s.ToString()]);
         }
 
-        if (Fault is not null)
-        {
-            words.AddRange(["--fault", Fault]);
-        }
-
+        words.AddRange(Mode?.Words() ?? []);
         words.AddRange(Implementation);
         return string.Join(' ', words.Select(Quote));
     }

@@ -1,0 +1,95 @@
+using AcPhys.Core;
+using AcPhys.Props.Support;
+using AcPhys.Spec.Adapters;
+using AcPhys.Spec.Cases;
+using AcPhys.Spec.Faults;
+using AcPhys.Spec.Invariants;
+using AcPhys.Spec.Judging;
+using AcPhys.Spec.Running;
+
+namespace AcPhys.Props.Judging;
+
+/// <summary>
+/// Issue 41, "the intended line is proved": a conformance finding names a declaration only when the port's answers equal
+/// the declared reference on the shrunk case, the original and fresh cases of its class. No planted fault that is not a
+/// documented deviation is ever called intended, a port bug that only reorders or only adds cells is not either, and a
+/// planted fault served under any declaration still fails the gate.
+/// </summary>
+public sealed class IntendedIsProvedTests
+{
+    private const int Cases = 1_000;
+
+    // The planted faults that ARE a documented deviation (or the other pick) served undeclared: a declaration may explain them.
+    private static readonly string[] Deviations = ["no-hysteresis", "sticky-pick", "no-hysteresis-indoor", "ace-hint-key", "early-return-undeclared"];
+
+    /// <summary>Gets every planted fault that is not a documented deviation.</summary>
+    public static TheoryData<string> NotDeviations => new(PlantedFaults.All.Select(f => f.Id).Where(id => !Deviations.Contains(id)));
+
+    /// <summary>Gets every declaration a port can add: each fidelity name, and the current-first pick.</summary>
+    public static IEnumerable<(string Label, PickPolicy? Pick, IndoorFidelity? Indoor, OutdoorFidelity? Outdoor)> Declarations()
+    {
+        foreach (string name in FidelityNames.Known)
+        {
+            Assert.True(FidelityNames.TryParse([name], out var indoor, out var outdoor, out _));
+            yield return (name, null, indoor, outdoor);
+        }
+
+        yield return ("pick current-first", PickPolicy.CurrentFirst, null, null);
+    }
+
+    [Theory(DisplayName = "INTENDED-PROVED: a planted fault that is not a documented deviation is never called intended by any conformance finding")]
+    [MemberData(nameof(NotDeviations))]
+    public void FaultIsNeverIntended(string faultId)
+    {
+        var impl = PlantedFaults.Create(faultId);
+        foreach (var invariant in ConformanceInvariants.All.Where(i => i.IsTestable(impl)))
+        {
+            var result = invariant.Run(impl, Cases, PropertyRun.SeedFor(invariant.Id), maxClasses: 1);
+            if (result.Status != ResultStatus.Failed || result.Violation?.Case is not AnyCase shrunk)
+            {
+                continue;
+            }
+
+            var intent = IntendedUnder.Explain(impl, invariant.Id, [.. new[] { shrunk, result.Original?.Case }.OfType<AnyCase>().Distinct()]);
+            // Null: the case no longer fails when asked again (a fault whose answers depend on earlier calls, e.g. no-reset).
+            Assert.True(intent?.Declaration is null, $"{faultId} / {invariant.Id}: called intended under {intent?.Declaration}");
+        }
+    }
+
+    [Theory(DisplayName = "INTENDED-PROVED: a port bug that only reorders or only adds cells is never called intended")]
+    [InlineData("reorder")]
+    [InlineData("add")]
+    public void ReorderingOrAddingIsNeverIntended(string bug)
+    {
+        var port = new RewrittenAnswers(ReferenceAdapter.Instance, bug == "reorder" ? RewrittenAnswers.Reversed : RewrittenAnswers.WithExtraCell);
+        var result = ConformanceInvariants.FindCell.Run(port, Cases, PropertyRun.SeedFor("FIND-CELL-CONFORMANCE"), maxClasses: 1);
+        Assert.Equal(ResultStatus.Failed, result.Status);
+        var intent = IntendedUnder.Explain(port, "FIND-CELL-CONFORMANCE", [.. new[] { result.Violation!.Case, result.Original?.Case }.OfType<AnyCase>().Distinct()]);
+        Assert.NotNull(intent);
+        Assert.Null(intent.Declaration);
+    }
+
+    [Fact(DisplayName = "INTENDED-PROVED: a documented deviation served undeclared is still named (early-return-undeclared: ace-early-return)")]
+    public void DeviationIsNamed()
+    {
+        var impl = PlantedFaults.Create("early-return-undeclared");
+        var result = ConformanceInvariants.FindCell.Run(impl, 5_000, PropertyRun.SeedFor("FIND-CELL-CONFORMANCE"), maxClasses: 1);
+        Assert.Equal(ResultStatus.Failed, result.Status);
+        var intent = IntendedUnder.Explain(impl, "FIND-CELL-CONFORMANCE", [.. new[] { result.Violation!.Case, result.Original?.Case }.OfType<AnyCase>().Distinct()]);
+        Assert.Contains("ace-early-return", intent?.Declaration, StringComparison.Ordinal);
+    }
+
+    [Theory(DisplayName = "INTENDED-PROVED: a planted fault that is not a documented deviation, served under any declaration, still fails the gate (its catchers or a conformance invariant)")]
+    [MemberData(nameof(NotDeviations))]
+    public void DeclaringNeverTurnsAFaultGreen(string faultId)
+    {
+        var fault = PlantedFaults.Find(faultId)!;
+        var judges = fault.CaughtBy.Select(id => InvariantCatalogue.Find(id)!).Concat(ConformanceInvariants.All).Distinct().ToList();
+        foreach (var (label, pick, indoor, outdoor) in Declarations())
+        {
+            var declared = DeclaredFault.Create(faultId, pick, indoor, outdoor);
+            bool failed = judges.Any(i => i.Run(declared, Profile.Pr.CasesPerInvariant, PropertyRun.SeedFor(i.Id), maxClasses: 1).Status == ResultStatus.Failed);
+            Assert.True(failed, $"{faultId} declaring {label}: the gate passed");
+        }
+    }
+}
