@@ -71,20 +71,26 @@ internal sealed class Campaign(FuzzSettings s, CancellationToken stop)
         }
 
         Directory.CreateDirectory(s.LogDir);
-        AflTools.Ensure(Say);
-        if (AflTools.Which("setpriv") is null)
-        {
-            throw new UsageException("setpriv (util-linux) is needed to stop afl-fuzz when acphys dies; install util-linux");
-        }
 
-        HarnessBuild.Ensure(s, Say, stop);
-        if (s.Port.AssemblyPath is not null)
+        // A port's --triage-only needs neither afl-fuzz nor the harness: triage runs the port in acphys.
+        bool fuzzes = !(s.TriageOnly && s.Port.IsExternal);
+        if (fuzzes)
         {
-            port = PortCopy.Ensure(s, Say, stop);
+            AflTools.Ensure(Say);
+            if (AflTools.Which("setpriv") is null)
+            {
+                throw new UsageException("setpriv (util-linux) is needed to stop afl-fuzz when acphys dies; install util-linux");
+            }
+
+            HarnessBuild.Ensure(s, Say, stop);
+            if (s.Port.AssemblyPath is not null)
+            {
+                port = PortCopy.Ensure(s, Say, stop);
+            }
         }
 
         var (seeds, seedCrashes) = PrepareSeeds();
-        string? dictionary = WriteDictionary();
+        string? dictionary = fuzzes ? WriteDictionary() : null;
         bool resumed = Directory.Exists(Path.Combine(s.SyncDir, "main", "queue"));
         Say($"campaign: target {s.Target.Name}, {s.Subject}, {s.Jobs} job(s), {s.Seconds} s, "
             + $"{(resumed ? "resuming " + s.SyncDir : "new sync folder " + s.SyncDir)}");

@@ -113,7 +113,7 @@ internal sealed class CrashTriage(FuzzSettings s, Subject subject)
             words.AddRange(["--fault", s.Fault]);
         }
 
-        words.AddRange(s.Port.Words()); // --impl PATH / --impl-cmd COMMAND [--timeout S]: the port that fails it
+        words.AddRange((s.Port with { Timeout = Spec.Protocol.ProcessAdapterOptions.DefaultTimeout }).Words()); // --impl PATH / --impl-cmd COMMAND: the port that fails it (replay waits the default 10 s per answer)
 
         return string.Join(' ', words.Select(ReplayLine.Quote));
     }

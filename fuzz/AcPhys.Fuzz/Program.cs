@@ -16,6 +16,7 @@ const string Usage = "usage: AcPhys.Fuzz TARGET [INPUT] | replay TARGET FILE... 
 
 // SharpFuzz's probes need a map before any instrumented code runs; Fuzzer.Run swaps in afl-fuzz's shared memory.
 PrivateMap.Attach();
+ForkServerPipes.KeepFromChildren(); // before an --impl-cmd child can be started
 string? fault = Environment.GetEnvironmentVariable("ACPHYS_FAULT") is { Length: > 0 } f ? f : null;
 Subject subject;
 try
