@@ -144,10 +144,16 @@ public abstract class PhysicsTarget<TCase> : FuzzTarget
             {
                 v = Run(subject, subject.Fresh(), c);
             }
-            catch (AdapterFailureException)
+#pragma warning disable CA1031 // A candidate that crashes a port (or makes it throw) is another finding's, not this one's shrink.
+            catch (Exception e) when (subject.IsExternal && e is not OutOfMemoryException)
+#pragma warning restore CA1031
             {
-                subject.Discard();
-                return null; // a candidate that crashes the child is another finding's, not this one's shrink
+                if (e is AdapterFailureException)
+                {
+                    subject.Discard();
+                }
+
+                return null;
             }
 
             return v is not null && v.InvariantId == finding.Key && (!separates || Check(ReferenceAdapter.Instance, c) is null) ? v : null;
