@@ -8,7 +8,8 @@
 #   fuzz/tests/port.sh served  [RUNS] [FAULT…]  planted faults served over protocol and in process, --until-crash
 #
 # Needs the builds (./acphys fuzz once, and once with --impl) and examples/dotnet-adapter built (Release).
-# MINUTES caps each --until-crash run (default 2). Results: .fuzz/port/. State the load next to every figure (uptime).
+# MINUTES caps each --until-crash run (default 2); TIMEOUT_MS sets afl-fuzz -t for both sides of `served` (the scene
+# target's seeds time out at the in-process default of 1000 ms under a load of 15-20; --impl-cmd defaults to 5000). Results: .fuzz/port/. State the load next to every figure (uptime).
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
 cd "$root"
@@ -94,8 +95,8 @@ served)
     for fault in "${faults[@]}"; do
         target=${target_of[$fault]:?no target for $fault}
         for ((i = 1; i <= runs; i++)); do
-            a=$(run "served-$fault-$i-inproc" "$target" --minutes "$minutes" --until-crash --fault "$fault")
-            b=$(run "served-$fault-$i-serve" "$target" --minutes "$minutes" --until-crash --impl-cmd "$serve --fault $fault")
+            a=$(run "served-$fault-$i-inproc" "$target" --minutes "$minutes" --until-crash --fault "$fault" ${TIMEOUT_MS:+--timeout-ms "$TIMEOUT_MS"})
+            b=$(run "served-$fault-$i-serve" "$target" --minutes "$minutes" --until-crash --impl-cmd "$serve --fault $fault" ${TIMEOUT_MS:+--timeout-ms "$TIMEOUT_MS"})
             echo "| $fault | $target | $i | $a | $b | $(replays "served-$fault-$i-serve" --impl-cmd "$serve --fault $fault") | $(cut -d' ' -f1 /proc/loadavg) |"
         done
     done
