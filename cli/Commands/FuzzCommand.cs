@@ -1,6 +1,7 @@
 using System.CommandLine;
 using System.Runtime.InteropServices;
 using AcPhys.Cli.Fuzz;
+using AcPhys.Cli.Impl;
 using AcPhys.Fuzz.Targets;
 using AcPhys.Spec.Corpus;
 using AcPhys.Spec.Faults;
@@ -37,10 +38,22 @@ internal static class FuzzCommand
         var buildDir = new Option<string>("--build-dir") { Description = "Where the instrumented harness is built (default .fuzz/build, shared by campaigns).", HelpName = "DIR" };
         var noBuild = new Option<bool>("--no-build") { Description = "Reuse the instrumented build in .fuzz/build as it is." };
         var triageOnly = new Option<bool>("--triage-only") { Description = "Do not fuzz: triage the crashes the campaign's sync folder holds (e.g. collected from other machines)." };
-        var command = new Command("fuzz", "Run an AFL++ campaign on a fuzz target, then triage crashes into minimised regressions with replay lines.")
+        var instrument = new Option<string[]>("--instrument")
         {
-            minutes, jobs, target, fault, quiet, timeout, campaign, regressions, fresh, untilCrash, buildDir, noBuild, triageOnly,
+            Description = "With --impl: the assemblies beside the adapter to instrument (default: the adapter's and the port's own projects in its .deps.json; never the framework, packages or AcPhys.*).",
+            HelpName = "NAME",
+            AllowMultipleArgumentsPerToken = true,
         };
+        var implOptions = new ImplementationOptions();
+        var command = new Command("fuzz", "Run an AFL++ campaign on a fuzz target (the reference, a planted fault, or a port: --impl / --impl-cmd), then triage crashes into minimised regressions with replay lines.")
+        {
+            minutes, jobs, target, fault, quiet, timeout, campaign, regressions, fresh, untilCrash, buildDir, noBuild, triageOnly, instrument,
+        };
+        foreach (var option in implOptions.All)
+        {
+            command.Options.Add(option);
+        }
+
         command.SetAction(parse => Run(() =>
         {
             string root = RepoRoot.Find();
@@ -56,9 +69,40 @@ internal static class FuzzCommand
                 }
             }
 
+            var port = implOptions.Read(parse);
+            if (port.IsExternal && f is not null)
+            {
+                throw new UsageException("--fault configures the bundled reference; it does not apply to --impl / --impl-cmd");
+            }
+
+            if (port.IsExternal && t.Kind != TargetKind.Physics)
+            {
+                throw new UsageException($"target {t.Name} fuzzes the suite's own readers, not an implementation (--impl / --impl-cmd take a physics target: {string.Join(", ", FuzzTargets.All.Where(x => x.TakesFaults).Select(x => x.Name))})");
+            }
+
+            string[] named = parse.GetValue(instrument) ?? [];
+            if (named.Length > 0 && port.AssemblyPath is null)
+            {
+                throw new UsageException("--instrument names assemblies of an --impl port");
+            }
+
             double m = parse.GetValue(minutes);
             int j = parse.GetValue(jobs);
-            int ms = parse.GetValue(timeout);
+            // A child's answers must time out inside afl-fuzz's -t, so a hang is the harness's finding, not a killed
+            // harness: --impl-cmd defaults to -t 5000 ms and a 2 s answer timeout (docs/fuzzing.md).
+            bool timeoutGiven = parse.GetResult(timeout) is { Implicit: false };
+            int ms = port.IsProcess && !timeoutGiven ? 5000 : parse.GetValue(timeout);
+            if (port.IsProcess)
+            {
+                if (parse.GetValue(implOptions.Timeout) is null)
+                {
+                    port = port with { Timeout = TimeSpan.FromMilliseconds(Math.Max(100, ms * 2 / 5)) };
+                }
+                else if (port.Timeout.TotalMilliseconds >= ms)
+                {
+                    throw new UsageException($"--timeout {port.Timeout.TotalSeconds:0.###} s must be below --timeout-ms {ms} (afl-fuzz's limit per input), so a hung child is a finding and not a killed harness");
+                }
+            }
             if (!double.IsFinite(m) || m <= 0 || m > MaxMinutes || j < 1 || ms < 1)
             {
                 throw new UsageException($"--minutes (a number of minutes up to {MaxMinutes}), --jobs and --timeout-ms must be positive (got --minutes {Spec.Values.InputQuote.Line(m.ToString(System.Globalization.CultureInfo.InvariantCulture))})");
@@ -70,7 +114,7 @@ internal static class FuzzCommand
                 throw new UsageException($"--jobs {j}: at most {maxJobs} (one afl-fuzz instance per core of this machine)");
             }
 
-            string name = $"{t.Name}-{f ?? "correct"}";
+            string name = $"{t.Name}-{CampaignKey(f, port)}";
             var settings = new FuzzSettings(
                 root,
                 t,
@@ -79,7 +123,7 @@ internal static class FuzzCommand
                 j,
                 ms,
                 Path.GetFullPath(parse.GetValue(campaign) ?? Path.Combine(root, ".fuzz", "campaigns", name)),
-                Path.GetFullPath(parse.GetValue(regressions) ?? Path.Combine(root, "corpus", "regressions")),
+                Path.GetFullPath(parse.GetValue(regressions) ?? (port.IsExternal ? "acphys-regressions" : Path.Combine(root, "corpus", "regressions"))),
                 Path.Combine(root, "corpus", "fuzz", t.Name))
             {
                 Quiet = parse.GetValue(quiet),
@@ -87,10 +131,16 @@ internal static class FuzzCommand
                 UntilCrash = parse.GetValue(untilCrash),
                 NoBuild = parse.GetValue(noBuild),
                 TriageOnly = parse.GetValue(triageOnly),
+                Port = port,
+                Instrument = named,
             };
             if (parse.GetValue(buildDir) is { Length: > 0 } dir)
             {
                 settings = settings with { BuildDir = Path.GetFullPath(dir) };
+            }
+            else if (port.AssemblyPath is not null)
+            {
+                settings = settings with { BuildDir = Path.Combine(root, ".fuzz", "build-impl") }; // the suite's assemblies uninstrumented
             }
 
             // Checked before afl++ is installed or anything is built (issue 28).
@@ -109,6 +159,22 @@ internal static class FuzzCommand
             return settings;
         }));
         return command;
+    }
+
+    // The campaign folder's key: the fault, the correct core, or the port (its file or command word and a hash of
+    // the full path or command line), so each implementation resumes its own queue night after night.
+    private static string CampaignKey(string? fault, ImplementationChoice port)
+    {
+        if (!port.IsExternal)
+        {
+            return fault ?? "correct";
+        }
+
+        string full = port.Command ?? port.AssemblyPath!;
+        string hash = Convert.ToHexStringLower(System.Security.Cryptography.SHA256.HashData(System.Text.Encoding.UTF8.GetBytes(full)))[..8];
+        string word = port.Command is { } c ? Path.GetFileName(c.Split(' ', StringSplitOptions.RemoveEmptyEntries).FirstOrDefault() ?? "cmd") : Path.GetFileNameWithoutExtension(full);
+        string slug = new([.. word.Select(ch => char.IsAsciiLetterOrDigit(ch) || ch is '-' or '_' or '.' ? ch : '_').Take(32)]);
+        return $"{(port.Command is null ? "impl" : "cmd")}-{slug}-{hash}";
     }
 
     // Not Guard.Run: Ctrl-C must stop afl-fuzz and still triage what it found, so the signal only cancels.
@@ -131,7 +197,8 @@ internal static class FuzzCommand
         {
             return new Campaign(settings(), cts.Token).Run();
         }
-        catch (Exception e) when (e is UsageException or CorpusFormatException or IOException or UnauthorizedAccessException)
+        catch (Exception e) when (e is UsageException or CorpusFormatException or IOException or UnauthorizedAccessException
+            or Spec.Adapters.AdapterLoadException or Spec.Adapters.AdapterFailureException)
         {
             Terminal.Error("fuzz", e.Message);
             return ExitCodes.ToolError;

@@ -1,4 +1,5 @@
 using System.Diagnostics;
+using AcPhys.Fuzz.Targets;
 
 namespace AcPhys.Cli.Fuzz;
 
@@ -58,6 +59,9 @@ internal sealed class AflInstance : IDisposable
         var env = info.Environment;
         env["ACPHYS_AFL_LOG"] = Path.Combine(s.LogDir, $"afl-{name}.log");
         env["ACPHYS_FAULT"] = s.Fault ?? string.Empty;
+        env[PortSubject.ImplVariable] = s.Port.AssemblyPath is null ? string.Empty : s.PortAssembly; // the instrumented copy
+        env[PortSubject.CommandVariable] = s.Port.Command ?? string.Empty;
+        env[PortSubject.TimeoutVariable] = s.Port.Timeout.TotalSeconds.ToString("0.###", System.Globalization.CultureInfo.InvariantCulture);
         env["AFL_SKIP_BIN_CHECK"] = "1"; // the dotnet apphost carries no AFL marker strings
         env["AFL_NO_UI"] = "1";
         env["AFL_SKIP_CPUFREQ"] = "1";

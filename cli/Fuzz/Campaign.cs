@@ -1,5 +1,7 @@
 using System.Globalization;
 using System.Text;
+using AcPhys.Cli.Impl;
+using AcPhys.Fuzz.Targets;
 using AcPhys.Spec.Corpus;
 
 namespace AcPhys.Cli.Fuzz;
@@ -13,9 +15,55 @@ namespace AcPhys.Cli.Fuzz;
 /// <param name="stop">Cancelled by Ctrl-C / SIGTERM: afl-fuzz stops, triage still runs.</param>
 internal sealed class Campaign(FuzzSettings s, CancellationToken stop)
 {
+    private Subject subject = Subject.Reference;
+    private (IReadOnlyList<string> Assemblies, int Probes)? port;
+
     /// <summary>Runs the campaign.</summary>
     /// <returns>0 nothing found, 1 findings, 2 the campaign could not run.</returns>
     public int Run()
+    {
+        subject = OpenSubject();
+        try
+        {
+            return RunWith();
+        }
+        finally
+        {
+            subject.Dispose();
+        }
+    }
+
+    // The implementation seeds and triage run against, in acphys: the reference (or a fault), the port's own adapter
+    // assembly (not the instrumented copy), or one child over protocol v1. A target the port cannot be fuzzed on is refused.
+    private Subject OpenSubject()
+    {
+        if (!s.Port.IsExternal)
+        {
+            return Subject.Of(s.Fault);
+        }
+
+        var opened = s.Port.Command is { } cmd
+            ? PortSubject.Served(cmd, s.Port.Timeout, LineLimitSetting.Read(), line => Say("[impl] " + line))
+            : PortSubject.InProcess(s.Port.AssemblyPath!);
+        try
+        {
+            if (PortSubject.Refusal(s.Target, opened) is { } why)
+            {
+                throw new UsageException(why);
+            }
+
+            Say($"implementation: {opened.Label}; tested for {string.Join(", ", s.Target.TestedFor(opened.Shared()))}");
+
+            return opened;
+        }
+        catch
+        {
+            opened.Dispose();
+            throw;
+        }
+    }
+
+    private int RunWith()
     {
         if (s.Fresh && Directory.Exists(s.CampaignDir))
         {
@@ -23,17 +71,28 @@ internal sealed class Campaign(FuzzSettings s, CancellationToken stop)
         }
 
         Directory.CreateDirectory(s.LogDir);
-        AflTools.Ensure(Say);
-        if (AflTools.Which("setpriv") is null)
+
+        // A port's --triage-only needs neither afl-fuzz nor the harness: triage runs the port in acphys.
+        bool fuzzes = !(s.TriageOnly && s.Port.IsExternal);
+        if (fuzzes)
         {
-            throw new UsageException("setpriv (util-linux) is needed to stop afl-fuzz when acphys dies; install util-linux");
+            AflTools.Ensure(Say);
+            if (AflTools.Which("setpriv") is null)
+            {
+                throw new UsageException("setpriv (util-linux) is needed to stop afl-fuzz when acphys dies; install util-linux");
+            }
+
+            HarnessBuild.Ensure(s, Say, stop);
+            if (s.Port.AssemblyPath is not null)
+            {
+                port = PortCopy.Ensure(s, Say, stop);
+            }
         }
 
-        HarnessBuild.Ensure(s, Say, stop);
         var (seeds, seedCrashes) = PrepareSeeds();
-        string? dictionary = WriteDictionary();
+        string? dictionary = fuzzes ? WriteDictionary() : null;
         bool resumed = Directory.Exists(Path.Combine(s.SyncDir, "main", "queue"));
-        Say($"campaign: target {s.Target.Name}, {(s.Fault is null ? "correct core" : "fault " + s.Fault)}, {s.Jobs} job(s), {s.Seconds} s, "
+        Say($"campaign: target {s.Target.Name}, {s.Subject}, {s.Jobs} job(s), {s.Seconds} s, "
             + $"{(resumed ? "resuming " + s.SyncDir : "new sync folder " + s.SyncDir)}");
 
         IReadOnlyList<InstanceStats> stats = [];
@@ -64,7 +123,7 @@ internal sealed class Campaign(FuzzSettings s, CancellationToken stop)
             : [];
         crashFiles.AddRange(Directory.EnumerateFiles(Path.Combine(s.CampaignDir, "seed-crashes")));
         Say($"triage: {crashFiles.Count} crash input(s)");
-        var groups = new CrashTriage(s).Run(crashFiles);
+        var groups = new CrashTriage(s, subject).Run(crashFiles);
 
         string cmin = GrowSeedCorpus();
         string summary = Summary(stats, wall, firstCrashWall, stopped, seedCrashes, groups, cmin);
@@ -97,7 +156,7 @@ internal sealed class Campaign(FuzzSettings s, CancellationToken stop)
         int crashing = 0;
         foreach (var (name, data) in all)
         {
-            bool fails = s.Target.Classify(data, s.Fault) is not null;
+            bool fails = s.Target.Classify(data, subject) is not null;
             crashing += fails ? 1 : 0;
             File.WriteAllBytes(Path.Combine(fails ? crashes : dir, name), data);
         }
@@ -126,6 +185,11 @@ internal sealed class Campaign(FuzzSettings s, CancellationToken stop)
     // Only correct-core campaigns feed the seed corpus: their queue is what the real code does.
     private string GrowSeedCorpus()
     {
+        if (s.Port.IsExternal)
+        {
+            return "seed corpus: unchanged (a port's queue stays in its campaign folder; only correct-core campaigns feed corpus/fuzz)";
+        }
+
         if (s.Fault is not null || s.Target.Kind == AcPhys.Fuzz.Targets.TargetKind.Smoke || !Directory.Exists(s.SyncDir))
         {
             return "seed corpus: unchanged (only correct-core campaigns of physics and parser targets feed it)";
@@ -140,7 +204,7 @@ internal sealed class Campaign(FuzzSettings s, CancellationToken stop)
     {
         var b = new StringBuilder();
         var inv = CultureInfo.InvariantCulture;
-        b.AppendLine(inv, $"fuzz summary: target {s.Target.Name}, {(s.Fault is null ? "correct core" : "fault " + s.Fault)}, {s.Jobs} job(s), -V {s.Seconds} s, stopped by {stopped}, wall {wall.TotalSeconds:F0} s");
+        b.AppendLine(inv, $"fuzz summary: target {s.Target.Name}, {s.Subject}, {s.Jobs} job(s), -V {s.Seconds} s, stopped by {stopped}, wall {wall.TotalSeconds:F0} s");
         b.AppendLine(inv, $"  machine: {Environment.ProcessorCount} cores, load average {LoadAverage()}");
         b.AppendLine(inv, $"  {"instance",-8} {"execs",12} {"exec/s",8} {"paths",6} {"crashes",7} {"hangs",5} {"stability",9}  first crash (afl time@execs)");
         foreach (var x in stats)
@@ -152,6 +216,21 @@ internal sealed class Campaign(FuzzSettings s, CancellationToken stop)
         if (stats.Count > 1)
         {
             b.AppendLine(inv, $"  {"total",-8} {stats.Sum(x => x.Execs),12} {stats.Sum(x => x.ExecsPerSec),8:F0}");
+        }
+
+        if (s.Port.IsExternal)
+        {
+            b.AppendLine(inv, $"  implementation: {subject.Label}; invariants tested (the rest not tested, as in the gate): {string.Join(", ", s.Target.TestedFor(subject.Shared()))}");
+        }
+
+        if (port is { } p)
+        {
+            long edges = stats.Count == 0 ? 0 : stats.Max(x => EdgesFound(x.Name));
+            b.AppendLine(inv, $"  port coverage: {edges} afl edge(s) reached (edges_found; only the port is instrumented) over {p.Probes} probe(s) (instrumented blocks) in {string.Join(", ", p.Assemblies)}");
+        }
+        else if (s.Port.Command is not null)
+        {
+            b.AppendLine("  coverage: the harness side's (codec, oracle, reference and wire code in acphys's own assemblies); the port's own branches are not seen over protocol");
         }
 
         var firstAfl = stats.Where(x => x.FirstCrashMs is not null).OrderBy(x => x.FirstCrashMs).FirstOrDefault();
@@ -174,6 +253,27 @@ internal sealed class Campaign(FuzzSettings s, CancellationToken stop)
         b.AppendLine(inv, $"  {cmin}");
         b.AppendLine(inv, $"  campaign folder: {s.CampaignDir} (the next run resumes its queue; --fresh starts over)");
         return b.ToString();
+    }
+
+    // afl-fuzz's own count of map entries (edges) seen by an instance.
+    private long EdgesFound(string instance)
+    {
+        string stats = Path.Combine(s.SyncDir, instance, "fuzzer_stats");
+        if (!File.Exists(stats))
+        {
+            return 0;
+        }
+
+        foreach (string line in File.ReadAllLines(stats))
+        {
+            var parts = line.Split(':', 2, StringSplitOptions.TrimEntries);
+            if (parts.Length == 2 && parts[0] == "edges_found" && long.TryParse(parts[1], NumberStyles.Integer, CultureInfo.InvariantCulture, out long n))
+            {
+                return n;
+            }
+        }
+
+        return 0;
     }
 
     private string Shown(string path) => Path.GetRelativePath(s.Root, path) is var rel && !rel.StartsWith("..", StringComparison.Ordinal) ? rel : path;

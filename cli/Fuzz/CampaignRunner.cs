@@ -13,6 +13,10 @@ internal sealed class CampaignRunner(FuzzSettings s, CancellationToken stop)
 {
     private static readonly TimeSpan Poll = TimeSpan.FromMilliseconds(500);
 
+    // How long past the deadline an interrupted afl-fuzz may take to stop before it is killed (the loop below would
+    // otherwise wait for it for ever).
+    private static readonly TimeSpan Unresponsive = TimeSpan.FromSeconds(30);
+
     /// <summary>Runs the campaign.</summary>
     /// <param name="seeds">The -i folder.</param>
     /// <param name="dictionary">The -x file, or null.</param>
@@ -52,6 +56,11 @@ internal sealed class CampaignRunner(FuzzSettings s, CancellationToken stop)
                     if (stop.IsCancellationRequested)
                     {
                         stopped = "interrupted";
+                    }
+                    else if (clock.Elapsed > deadline + Unresponsive)
+                    {
+                        stopped = "deadline (afl-fuzz killed: it did not stop when interrupted)";
+                        instances.ForEach(x => x.WaitOrKill(TimeSpan.Zero));
                     }
                     else if (clock.Elapsed > deadline)
                     {

@@ -13,7 +13,8 @@ namespace AcPhys.Cli.Fuzz;
 /// are not invariant violations (parser targets, stray exceptions) keep their smallest raw input.
 /// </summary>
 /// <param name="s">The settings.</param>
-internal sealed class CrashTriage(FuzzSettings s)
+/// <param name="subject">The implementation the campaign fuzzed, opened in acphys (a port's own assembly or one child).</param>
+internal sealed class CrashTriage(FuzzSettings s, Subject subject)
 {
     /// <summary>Gets the folder where raw inputs of non-physics findings and the triage report go.</summary>
     public string TriageDir => Path.Combine(s.CampaignDir, "triage");
@@ -28,7 +29,7 @@ internal sealed class CrashTriage(FuzzSettings s)
         foreach (string file in crashFiles)
         {
             byte[] data = File.ReadAllBytes(file);
-            if (s.Target.Classify(data, s.Fault) is { } finding)
+            if (s.Target.Classify(data, subject) is { } finding)
             {
                 findings.Add((file, data, finding));
             }
@@ -56,7 +57,7 @@ internal sealed class CrashTriage(FuzzSettings s)
     private TriageGroup Settle(string key, string signature, int count, string file, byte[] data, Finding finding)
     {
         string origin = $"afl {s.Target.Name} {Path.GetFileName(Path.GetDirectoryName(Path.GetDirectoryName(file)))}/{Path.GetFileName(file)} hex:{Hex(data)}";
-        if (finding.IsViolation && s.Target.Minimise(finding, s.Fault, origin) is { } entry)
+        if (finding.IsViolation && s.Target.Minimise(finding, subject, origin) is { } entry)
         {
             string path = Path.Combine(s.RegressionsDir, FailureFile.NameFor(entry));
             bool known = File.Exists(path);
@@ -70,18 +71,38 @@ internal sealed class CrashTriage(FuzzSettings s)
         }
 
         // No stored case format: keep the smallest raw input, named by its content; a parser's goes to
-        // <regressions>/parsers, which props (ParserRegressions) replays on every test run.
-        string folder = s.Target.Kind == TargetKind.Parser ? Path.Combine(s.RegressionsDir, "parsers") : TriageDir;
+        // <regressions>/parsers, which props (ParserRegressions) replays on every test run; a port's crash, hang or
+        // exception to <regressions>/crashes (a finding of its own kind: the port could not answer the case at all).
+        string folder = s.Target.Kind == TargetKind.Parser ? Path.Combine(s.RegressionsDir, "parsers")
+            : s.Port.IsExternal ? Path.Combine(s.RegressionsDir, "crashes")
+            : TriageDir;
         string raw = Path.Combine(folder, $"{s.Target.Name}-{key}-{Convert.ToHexStringLower(SHA256.HashData(data))[..8]}.bin");
         bool had = File.Exists(raw);
         AtomicFile.WriteAllBytes(raw, data);
-        string replay = $"{(s.Fault is null ? string.Empty : $"ACPHYS_FAULT={s.Fault} ")}{s.Harness} replay {s.Target.Name} {raw}";
+        string replay = $"{HarnessEnvironment()}{s.Harness} replay {s.Target.Name} {raw}";
         return new TriageGroup(key, signature, count, file, raw, replay, true, had);
     }
 
     // The file must fail the same way in `acphys replay` under the campaign's fault: the same judges (Judges) find the
     // invariant the finding names.
-    private bool Reproduces(CorpusEntry entry) => CaseReplay.Reproduces(entry, Implementations.For(s.Fault));
+    private bool Reproduces(CorpusEntry entry)
+    {
+        try
+        {
+            return CaseReplay.Reproduces(entry, subject.Fresh());
+        }
+        catch (Spec.Adapters.AdapterFailureException)
+        {
+            subject.Discard();
+            return false;
+        }
+    }
+
+    // The harness replays a raw input against what the campaign ran: the planted fault, or the port (its own assembly).
+    private string HarnessEnvironment() =>
+        s.Port.Command is { } cmd ? $"{PortSubject.CommandVariable}={ReplayLine.Quote(cmd)} "
+        : s.Port.AssemblyPath is { } dll ? $"{PortSubject.ImplVariable}={ReplayLine.Quote(dll)} "
+        : s.Fault is null ? string.Empty : $"ACPHYS_FAULT={s.Fault} ";
 
     private string ReplayCommand(string path)
     {
@@ -91,6 +112,8 @@ internal sealed class CrashTriage(FuzzSettings s)
         {
             words.AddRange(["--fault", s.Fault]);
         }
+
+        words.AddRange((s.Port with { Timeout = Spec.Protocol.ProcessAdapterOptions.DefaultTimeout }).Words()); // --impl PATH / --impl-cmd COMMAND: the port that fails it (replay waits the default 10 s per answer)
 
         return string.Join(' ', words.Select(ReplayLine.Quote));
     }

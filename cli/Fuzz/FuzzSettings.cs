@@ -1,3 +1,4 @@
+using AcPhys.Cli.Impl;
 using AcPhys.Fuzz.Targets;
 
 namespace AcPhys.Cli.Fuzz;
@@ -24,6 +25,24 @@ internal sealed record FuzzSettings(
     string SeedCorpusDir)
 {
     private readonly string? buildDir;
+
+    /// <summary>Gets the port under test (<c>--impl</c> / <c>--impl-cmd</c>), or <see cref="ImplementationChoice.Reference"/> for the bundled reference.</summary>
+    public ImplementationChoice Port { get; init; } = ImplementationChoice.Reference;
+
+    /// <summary>Gets the assemblies of an <c>--impl</c> port to instrument (file names in the adapter's folder); empty: the default (<see cref="PortCopy"/>).</summary>
+    public IReadOnlyList<string> Instrument { get; init; } = [];
+
+    /// <summary>Gets the folder holding the instrumented copy of an <c>--impl</c> port (inside the campaign folder, refreshed when the port changes).</summary>
+    public string PortDir => Path.Combine(CampaignDir, "port");
+
+    /// <summary>Gets the copy of the adapter assembly the harness loads under afl-fuzz.</summary>
+    public string PortAssembly => Path.Combine(PortDir, Path.GetFileName(Port.AssemblyPath ?? "none.dll"));
+
+    /// <summary>Gets a value indicating whether the harness build instruments the suite's own assemblies (not for an <c>--impl</c> port: afl is guided by the port's branches alone).</summary>
+    public bool InstrumentsOurs => Port.AssemblyPath is null;
+
+    /// <summary>Gets how reports name the implementation under test.</summary>
+    public string Subject => Port.Command is { } c ? "--impl-cmd " + Spec.Values.InputQuote.Line(c, 80) : Port.AssemblyPath is { } a ? "--impl " + a : Fault is null ? "correct core" : "fault " + Fault;
 
     /// <summary>Gets a value indicating whether only the summary is printed (CI).</summary>
     public bool Quiet { get; init; }

@@ -28,6 +28,12 @@ internal static class HarnessBuild
         say($"build: publishing the harness and the instrumenter (Release) into {s.BuildDir}");
         Publish(s, "fuzz/AcPhys.Fuzz/AcPhys.Fuzz.csproj", "harness", stop);
         Publish(s, "fuzz/AcPhys.Fuzz.Instrumenter/AcPhys.Fuzz.Instrumenter.csproj", "instrument", stop);
+        if (!s.InstrumentsOurs)
+        {
+            say("build: the suite's own assemblies stay uninstrumented (an --impl campaign is guided by the port's branches)");
+            return;
+        }
+
         var dlls = Instrumented.Select(d => Path.Combine(s.BuildDir, "harness", d)).Where(File.Exists).ToArray();
         var (code, output) = GuardedChild.Run(Path.Combine(s.BuildDir, "instrument", "AcPhys.Fuzz.Instrumenter"), dlls, null, stop);
         File.WriteAllText(Path.Combine(s.LogDir, "instrument.log"), output);
@@ -40,6 +46,20 @@ internal static class HarnessBuild
         {
             say("  " + line);
         }
+    }
+
+    /// <summary>Runs the instrumenter (already built) on assemblies, in one process; returns its output.</summary>
+    /// <param name="s">The settings.</param>
+    /// <param name="dlls">The assemblies, instrumented in place.</param>
+    /// <param name="log">The log file.</param>
+    /// <param name="stop">Cancelled by Ctrl-C / SIGTERM.</param>
+    /// <returns>The instrumenter's lines.</returns>
+    /// <exception cref="UsageException">Instrumenting failed.</exception>
+    public static string Instrument(FuzzSettings s, IReadOnlyList<string> dlls, string log, CancellationToken stop)
+    {
+        var (code, output) = GuardedChild.Run(Path.Combine(s.BuildDir, "instrument", "AcPhys.Fuzz.Instrumenter"), dlls, null, stop);
+        File.WriteAllText(log, output);
+        return code == 0 ? output : throw new UsageException($"instrumenting failed ({code}); see {log}");
     }
 
     private static void Publish(FuzzSettings s, string project, string folder, CancellationToken stop)

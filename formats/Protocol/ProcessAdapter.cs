@@ -472,11 +472,26 @@ public sealed class ProcessAdapter : ICellPhysics, IDisposable
     }
 
     /// <inheritdoc/>
-    public IReadOnlyList<CellId> OutsideCellsParts(IReadOnlyList<Part> parts) => Call(
-        Op.OutsideCellsParts,
-        w => PartWire.WriteParts(w, "parts", parts),
-        a => Wire.ReadCells(a, "cells"),
-        r => r.OutsideCellsParts(parts));
+    /// <exception cref="UnposableQueryException">A part protocol v1 cannot carry (more than a block from the first part, or out of the wire's bounds): the case is not judged, as a correct child must refuse it (PartBounds).</exception>
+    public IReadOnlyList<CellId> OutsideCellsParts(IReadOnlyList<Part> parts)
+    {
+        ArgumentNullException.ThrowIfNull(parts);
+
+        // Refused before it is asked or counted (as RefuseUnposable): a pipelined pass must not pair answers with it.
+        for (int i = 0; i < parts.Count; i++)
+        {
+            if (Values.PartBounds.Problem(parts[i], parts[0]) is var (field, problem))
+            {
+                throw new UnposableQueryException($"parts[{i}].{field}: {problem}: protocol v1 cannot carry this query (docs/protocol.md); case not judged");
+            }
+        }
+
+        return Call(
+            Op.OutsideCellsParts,
+            w => PartWire.WriteParts(w, "parts", parts),
+            a => Wire.ReadCells(a, "cells"),
+            r => r.OutsideCellsParts(parts));
+    }
 
     /// <inheritdoc/>
     public void Dispose() => child.Dispose();

@@ -59,12 +59,69 @@ public abstract class FuzzTarget
         }
     }
 
+    /// <summary>Builds the test against a subject (the reference, a planted fault, or a port).</summary>
+    /// <param name="subject">The implementation under test.</param>
+    /// <returns>The test.</returns>
+    /// <exception cref="ArgumentException">A port was given to a target that fuzzes no implementation.</exception>
+    public virtual Action<ReadOnlySpan<byte>> CreateTest(Subject subject)
+    {
+        ArgumentNullException.ThrowIfNull(subject);
+        NoPort(subject);
+        return CreateTest(subject.Fault);
+    }
+
+    /// <summary>Runs one input again against a subject and says what fails, or null when it passes.</summary>
+    /// <param name="input">The input.</param>
+    /// <param name="subject">The implementation under test.</param>
+    /// <returns>The finding, or null.</returns>
+    public virtual Finding? Classify(byte[] input, Subject subject)
+    {
+        ArgumentNullException.ThrowIfNull(subject);
+        NoPort(subject);
+        return Classify(input, subject.Fault);
+    }
+
+    /// <summary>Shrinks a finding of a subject to a minimal stored case, or returns null when the target has no case format.</summary>
+    /// <param name="finding">A finding of this target.</param>
+    /// <param name="subject">The implementation the campaign ran.</param>
+    /// <param name="origin">Where the input came from.</param>
+    /// <returns>The entry, or null.</returns>
+    public virtual CorpusEntry? Minimise(Finding finding, Subject subject, string origin)
+    {
+        ArgumentNullException.ThrowIfNull(subject);
+        NoPort(subject);
+        return Minimise(finding, subject.Fault, origin);
+    }
+
     /// <summary>Shrinks a finding to a minimal stored case, or returns null when the target has no case format.</summary>
     /// <param name="finding">A finding of this target.</param>
     /// <param name="fault">The planted fault the campaign ran, or null.</param>
     /// <param name="origin">Where the input came from (written into the entry's <c>seed</c> field).</param>
     /// <returns>The entry (title, invariant, case, the fault in <c>catches</c>), or null.</returns>
     public virtual CorpusEntry? Minimise(Finding finding, string? fault, string origin) => null;
+
+    /// <summary>Says why the target cannot fuzz a port, or null when it can (physics targets whose invariants the port is testable for).</summary>
+    /// <param name="impl">The port.</param>
+    /// <returns>The reason, or null.</returns>
+    public virtual string? WhyNotFuzzable(AcPhys.Spec.Adapters.ICellPhysics impl) =>
+        $"target {Name} fuzzes the suite's own readers, not an implementation (--impl / --impl-cmd take a physics target: land, walk, scene, parts)";
+
+    /// <summary>Gets the invariants of this target an implementation is tested for (none for targets that fuzz no implementation).</summary>
+    /// <param name="impl">The implementation.</param>
+    /// <returns>The invariant IDs.</returns>
+    public virtual IReadOnlyList<string> TestedFor(AcPhys.Spec.Adapters.ICellPhysics impl) => [];
+
+    /// <summary>Rejects a port for targets that fuzz no implementation (parsers, smoke).</summary>
+    /// <param name="subject">The subject.</param>
+    /// <exception cref="ArgumentException">A port was given.</exception>
+    protected void NoPort(Subject subject)
+    {
+        ArgumentNullException.ThrowIfNull(subject);
+        if (subject.IsExternal)
+        {
+            throw new ArgumentException($"target {Name} fuzzes the suite's own readers, not an implementation (--impl / --impl-cmd take a physics target)", nameof(subject));
+        }
+    }
 
     /// <summary>Rejects a fault id for targets that take none.</summary>
     /// <param name="fault">The fault id.</param>

@@ -28,6 +28,9 @@ public sealed class LandTarget : PhysicsTarget<LandCase>
     };
 
     /// <inheritdoc/>
+    public override CaseKind Judged => CaseKind.Land;
+
+    /// <inheritdoc/>
     public override LandCase Decode(ReadOnlySpan<byte> data) => LandCaseCodec.Decode(data);
 
     /// <inheritdoc/>

@@ -38,6 +38,9 @@ public sealed class PartsTarget : PhysicsTarget<PartsCase>
     };
 
     /// <inheritdoc/>
+    public override CaseKind Judged => CaseKind.Parts;
+
+    /// <inheritdoc/>
     public override PartsCase Decode(ReadOnlySpan<byte> data) => PartsCodec.Decode(data);
 
     /// <inheritdoc/>

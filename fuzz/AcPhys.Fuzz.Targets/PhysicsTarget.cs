@@ -2,6 +2,8 @@ using AcPhys.Spec.Adapters;
 using AcPhys.Spec.Cases;
 using AcPhys.Spec.Corpus;
 using AcPhys.Spec.Invariants;
+using AcPhys.Spec.Judging;
+using AcPhys.Spec.Protocol;
 
 namespace AcPhys.Fuzz.Targets;
 
@@ -37,13 +39,45 @@ public abstract class PhysicsTarget<TCase> : FuzzTarget
     /// <returns>Candidates.</returns>
     public abstract IEnumerable<TCase> Shrink(TCase c);
 
-    /// <inheritdoc/>
-    public override Action<ReadOnlySpan<byte>> CreateTest(string? fault)
+    /// <summary>Gets the kind of case the target's inputs decode to: the invariants that judge it are <see cref="Judges.For"/> of it.</summary>
+    public abstract CaseKind Judged { get; }
+
+    /// <summary>
+    /// Says why the target cannot fuzz a port: none of the invariants that judge its cases is testable for
+    /// it (the ops they need are not offered, or its declared deviations break them by design). Null when at least one
+    /// is; the others are skipped on every input, as the gate reports them NOT TESTED.
+    /// </summary>
+    /// <param name="impl">The implementation.</param>
+    /// <returns>The reason, or null.</returns>
+    public override string? WhyNotFuzzable(ICellPhysics impl)
     {
-        var impl = Implementations.For(fault);
+        ArgumentNullException.ThrowIfNull(impl);
+        var judges = Judges.For(Judged);
+        if (judges.Any(i => i.IsTestable(impl)))
+        {
+            return null;
+        }
+
+        var needs = judges.Select(i => i.WhyNotTestable(impl)).Distinct().Take(3);
+        return $"target {Name}: none of its {judges.Count} invariants is testable for '{impl.Name}' (it offers {string.Join(", ", OpNames.Names(impl.Ops))}): {string.Join("; ", needs)}";
+    }
+
+    /// <summary>Gets the invariants of this target that a subject is tested for (the rest are skipped, as in the gate).</summary>
+    /// <param name="impl">The implementation.</param>
+    /// <returns>The testable invariant IDs, in judge order.</returns>
+    public override IReadOnlyList<string> TestedFor(ICellPhysics impl) => [.. Judges.For(Judged).Where(i => i.IsTestable(impl)).Select(i => i.Id)];
+
+    /// <inheritdoc/>
+    public override Action<ReadOnlySpan<byte>> CreateTest(string? fault) => CreateTest(Subject.Of(fault));
+
+    /// <inheritdoc/>
+    public override Action<ReadOnlySpan<byte>> CreateTest(Subject subject)
+    {
+        ArgumentNullException.ThrowIfNull(subject);
+        _ = subject.Shared(); // an unknown fault or an unloadable port is rejected now, not at the first input
         return data =>
         {
-            if (Check(impl, Decode(data)) is { } violation)
+            if (Run(subject, PerInput(subject), Decode(data)) is { } violation)
             {
                 throw new InvariantViolationException(violation);
             }
@@ -51,24 +85,48 @@ public abstract class PhysicsTarget<TCase> : FuzzTarget
     }
 
     /// <inheritdoc/>
-    public override Finding? Classify(byte[] input, string? fault)
+    public override Finding? Classify(byte[] input, string? fault) => Classify(input, Subject.Of(fault));
+
+    /// <inheritdoc/>
+    public override Finding? Classify(byte[] input, Subject subject)
     {
+        ArgumentNullException.ThrowIfNull(subject);
         var c = Decode(input);
-        return Check(Implementations.For(fault), c) is { } v ? new Finding(v.InvariantId, Signatures.Of(v.Message), v.ToString(), AnyCase.Of(c)) : null;
+        if (!subject.IsExternal)
+        {
+            return Check(subject.Fresh(), c) is { } v ? new Finding(v.InvariantId, Signatures.Of(v.Message), v.ToString(), AnyCase.Of(c)) : null;
+        }
+
+        try
+        {
+            return Run(subject, subject.Fresh(), c) is { } v ? new Finding(v.InvariantId, Signatures.Of(v.Message), v.ToString(), AnyCase.Of(c)) : null;
+        }
+#pragma warning disable CA1031 // A port's crash, hang, garbage answer or exception is a finding of its own kind.
+        catch (Exception e) when (e is not OutOfMemoryException)
+#pragma warning restore CA1031
+        {
+            return e is AdapterFailureException
+                ? new Finding(AdapterFailureKey, Signatures.Of(e.Message), e.Message, null)
+                : new Finding(e.GetType().Name, Signatures.Of(e), e.ToString(), null);
+        }
     }
+
+    /// <inheritdoc/>
+    public override CorpusEntry? Minimise(Finding finding, string? fault, string origin) => Minimise(finding, Subject.Of(fault), origin);
 
     /// <summary>
     /// Shrinks greedily as FsCheck does (take the first simpler candidate that still fails, start again) while the
-    /// same invariant stays broken; under a planted fault the case must also keep holding on the reference, so the
-    /// stored file is a regression that tells the fault from the correct core.
+    /// same invariant stays broken; for a planted fault or a port the case must also keep holding on the reference, so
+    /// the stored file is a regression that tells the subject from the correct core.
     /// </summary>
     /// <param name="finding">A finding of this target.</param>
-    /// <param name="fault">The campaign's fault, or null.</param>
+    /// <param name="subject">The campaign's implementation.</param>
     /// <param name="origin">Where the input came from.</param>
     /// <returns>The entry.</returns>
-    public override CorpusEntry? Minimise(Finding finding, string? fault, string origin)
+    public override CorpusEntry? Minimise(Finding finding, Subject subject, string origin)
     {
         ArgumentNullException.ThrowIfNull(finding);
+        ArgumentNullException.ThrowIfNull(subject);
         if (finding.Case?.Value is not TCase start)
         {
             return null;
@@ -76,10 +134,30 @@ public abstract class PhysicsTarget<TCase> : FuzzTarget
 
         // Every check gets a fresh implementation, as Classify and acphys replay do: a stateful fault (no-reset keeps
         // the previous query's cells) must not carry one candidate's history into the next, or a case that failed a
-        // moment ago can pass when checked again.
-        bool separates = fault is not null && Check(ReferenceAdapter.Instance, start) is null;
-        Violation? FailureOf(TCase c) =>
-            Check(Implementations.For(fault), c) is { } v && v.InvariantId == finding.Key && (!separates || Check(ReferenceAdapter.Instance, c) is null) ? v : null;
+        // moment ago can pass when checked again. A child process is one per campaign (its answers carry no state
+        // between requests by protocol v1's rules).
+        bool separates = subject != Subject.Reference && Check(ReferenceAdapter.Instance, start) is null;
+        Violation? FailureOf(TCase c)
+        {
+            Violation? v;
+            try
+            {
+                v = Run(subject, subject.Fresh(), c);
+            }
+#pragma warning disable CA1031 // A candidate that crashes a port (or makes it throw) is another finding's, not this one's shrink.
+            catch (Exception e) when (subject.IsExternal && e is not OutOfMemoryException)
+#pragma warning restore CA1031
+            {
+                if (e is AdapterFailureException)
+                {
+                    subject.Discard();
+                }
+
+                return null;
+            }
+
+            return v is not null && v.InvariantId == finding.Key && (!separates || Check(ReferenceAdapter.Instance, c) is null) ? v : null;
+        }
 
         if (FailureOf(start) is not { } violation)
         {
@@ -110,6 +188,38 @@ public abstract class PhysicsTarget<TCase> : FuzzTarget
 
         var entry = CorpusEntry.From(current, $"{violation.InvariantId}: {violation.Message}", violation.InvariantId, FinderNames.Fuzz, origin)
             ?? throw new InvalidOperationException($"{typeof(TCase).Name} has no corpus format");
-        return separates ? entry with { Catches = [fault!] } : entry;
+        return separates && subject.Fault is { } fault ? entry with { Catches = [fault] } : entry;
+    }
+
+    /// <summary>The key of a finding where a port could not answer at all (crash, hang past the timeout, an answer that is not protocol v1).</summary>
+    public const string AdapterFailureKey = "ADAPTER-FAILURE";
+
+    /// <summary>Gets the implementation one input runs against: the long-lived one, or a fresh one where an input must not see another's state.</summary>
+    /// <param name="subject">The subject.</param>
+    /// <returns>The implementation.</returns>
+    protected virtual ICellPhysics PerInput(Subject subject)
+    {
+        ArgumentNullException.ThrowIfNull(subject);
+        return subject.Shared();
+    }
+
+    // One input's check; a child that pipelines streams the input's queries (docs/protocol.md, "Pipelining"); a child
+    // that failed is dropped so the next input starts a new one (its failure is this input's finding).
+    private Violation? Run(Subject subject, ICellPhysics impl, TCase c)
+    {
+        if (impl is not ProcessAdapter child)
+        {
+            return Check(impl, c);
+        }
+
+        try
+        {
+            return child.Pipelines ? child.Pipelined(() => Check(impl, c)) : Check(impl, c);
+        }
+        catch (AdapterFailureException)
+        {
+            subject.Discard();
+            throw;
+        }
     }
 }

@@ -37,24 +37,20 @@ public sealed class SceneWalkTarget : PhysicsTarget<SceneWalk>
         ["dungeon-run"] = [0x05, 0x01, 0x10, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x30, 0x30, 0x14, 0x14, 0x00, 0x00, 0x04, 0x04, 0x00],
     };
 
+    /// <inheritdoc/>
+    public override CaseKind Judged => CaseKind.SceneWalk;
+
     /// <summary>
-    /// Builds the test with a fresh implementation per input: an indoor fault may keep state between queries
+    /// Gives each input a fresh implementation where that is cheap: an indoor fault may keep state between queries
     /// (<c>stale-scene-array</c> keeps its cell array), and afl-fuzz's inputs must not see each other's state, so a
     /// crash is the input's own and triage (which starts from a fresh implementation) reproduces it.
     /// </summary>
-    /// <param name="fault">A planted fault id, or null for the correct core.</param>
-    /// <returns>The test.</returns>
-    /// <exception cref="ArgumentException">The fault is unknown.</exception>
-    public override Action<ReadOnlySpan<byte>> CreateTest(string? fault)
+    /// <param name="subject">The subject.</param>
+    /// <returns>The implementation for one input.</returns>
+    protected override ICellPhysics PerInput(Subject subject)
     {
-        _ = Implementations.For(fault); // an unknown fault is rejected now, not at the first input
-        return data =>
-        {
-            if (Check(Implementations.For(fault), Decode(data)) is { } violation)
-            {
-                throw new InvariantViolationException(violation);
-            }
-        };
+        ArgumentNullException.ThrowIfNull(subject);
+        return subject.Fresh();
     }
 
     /// <inheritdoc/>

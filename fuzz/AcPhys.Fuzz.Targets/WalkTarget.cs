@@ -29,6 +29,9 @@ public sealed class WalkTarget : PhysicsTarget<Walk>
     };
 
     /// <inheritdoc/>
+    public override CaseKind Judged => CaseKind.Walk;
+
+    /// <inheritdoc/>
     public override Walk Decode(ReadOnlySpan<byte> data) => WalkCodec.Decode(data);
 
     /// <inheritdoc/>

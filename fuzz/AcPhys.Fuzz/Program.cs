@@ -9,12 +9,26 @@ using SharpFuzz;
 // AcPhys.Fuzz cmin TARGET SEEDS DIR...  add to SEEDS the inputs of DIR... that cover new tuples (afl-cmin's job)
 // AcPhys.Fuzz bench TARGET [N]          time the test alone on N random 17-byte inputs (no afl-fuzz, no pipes)
 // AcPhys.Fuzz list                      list targets
-// TARGET may also come from ACPHYS_FUZZ_TARGET; the planted fault from ACPHYS_FAULT (unset or empty: correct core).
+// TARGET may also come from ACPHYS_FUZZ_TARGET; the planted fault from ACPHYS_FAULT (unset or empty: correct core);
+// a port instead of the reference from ACPHYS_IMPL (an adapter assembly, in process) or ACPHYS_IMPL_CMD (a protocol v1
+// command line: one child for this process's life, restarted after it failed; ACPHYS_IMPL_TIMEOUT seconds per answer).
 const string Usage = "usage: AcPhys.Fuzz TARGET [INPUT] | replay TARGET FILE... | seeds TARGET DIR | dict TARGET FILE | cmin TARGET SEEDS DIR... | bench TARGET [N] | list";
 
 // SharpFuzz's probes need a map before any instrumented code runs; Fuzzer.Run swaps in afl-fuzz's shared memory.
 PrivateMap.Attach();
+ForkServerPipes.KeepFromChildren(); // before an --impl-cmd child can be started
 string? fault = Environment.GetEnvironmentVariable("ACPHYS_FAULT") is { Length: > 0 } f ? f : null;
+Subject subject;
+try
+{
+    subject = PortSubject.FromEnvironment() ?? Subject.Of(fault);
+}
+catch (Exception e) when (e is ArgumentException or AcPhys.Spec.Adapters.AdapterLoadException)
+{
+    Console.Error.WriteLine(e.Message);
+    return 2;
+}
+
 var rest = new Queue<string>(args);
 string? command = rest.Count > 0 ? rest.Dequeue() : Environment.GetEnvironmentVariable("ACPHYS_FUZZ_TARGET");
 
@@ -66,7 +80,7 @@ switch (command)
 
     case "cmin":
         {
-            if (rest.Count < 3 || FuzzTargets.Find(rest.Dequeue()) is not { } target || Create(target, null) is not { } test)
+            if (rest.Count < 3 || FuzzTargets.Find(rest.Dequeue()) is not { } target || Create(target, Subject.Reference) is not { } test)
             {
                 Console.Error.WriteLine(Usage);
                 return 2;
@@ -79,7 +93,7 @@ switch (command)
 
     case "bench":
         {
-            if (rest.Count is < 1 or > 2 || FuzzTargets.Find(rest.Dequeue()) is not { } target || Create(target, fault) is not { } test)
+            if (rest.Count is < 1 or > 2 || FuzzTargets.Find(rest.Dequeue()) is not { } target || Create(target, subject) is not { } test)
             {
                 Console.Error.WriteLine(Usage);
                 return 2;
@@ -99,7 +113,7 @@ switch (command)
                 return 2;
             }
 
-            if (Create(target, fault) is not { } test)
+            if (Create(target, subject) is not { } test)
             {
                 return 2;
             }
@@ -122,7 +136,7 @@ switch (command)
                 return 2;
             }
 
-            if (Create(target, fault) is not { } test)
+            if (Create(target, subject) is not { } test)
             {
                 return 2;
             }
@@ -151,13 +165,13 @@ switch (command)
         }
 }
 
-static Action<ReadOnlySpan<byte>>? Create(FuzzTarget target, string? fault)
+static Action<ReadOnlySpan<byte>>? Create(FuzzTarget target, Subject subject)
 {
     try
     {
-        return target.CreateTest(fault);
+        return PortSubject.Refusal(target, subject) is { } why ? throw new ArgumentException(why) : target.CreateTest(subject);
     }
-    catch (ArgumentException e)
+    catch (Exception e) when (e is ArgumentException or AcPhys.Spec.Adapters.AdapterLoadException or AcPhys.Spec.Adapters.AdapterFailureException)
     {
         Console.Error.WriteLine(e.Message);
         return null;

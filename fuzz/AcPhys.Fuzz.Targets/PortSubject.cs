@@ -1,0 +1,99 @@
+using System.Globalization;
+using AcPhys.Spec.Adapters;
+using AcPhys.Spec.Protocol;
+
+namespace AcPhys.Fuzz.Targets;
+
+/// <summary>
+/// A port as a fuzz <see cref="Subject"/>, the same way for the harness (from its environment) and for
+/// <c>acphys fuzz</c>'s seeds and triage: an <c>--impl</c> assembly through the gate's loader
+/// (<see cref="AdapterAssembly"/>), or an <c>--impl-cmd</c> child through the gate's <see cref="ProcessAdapter"/>
+/// (timeout, line limit, process group, hostile answers all as in <c>acphys verify</c>).
+/// </summary>
+public static class PortSubject
+{
+    /// <summary>The harness's variable naming an adapter assembly (an instrumented copy, under afl-fuzz).</summary>
+    public const string ImplVariable = "ACPHYS_IMPL";
+
+    /// <summary>The harness's variable holding a protocol v1 command line.</summary>
+    public const string CommandVariable = "ACPHYS_IMPL_CMD";
+
+    /// <summary>The harness's variable holding the per-answer timeout of the child, in seconds.</summary>
+    public const string TimeoutVariable = "ACPHYS_IMPL_TIMEOUT";
+
+    /// <summary>Returns an in-process port: a new adapter instance wherever the reference would get a fresh one.</summary>
+    /// <param name="path">The adapter assembly.</param>
+    /// <returns>The subject.</returns>
+    /// <exception cref="AdapterLoadException">The assembly holds no usable adapter.</exception>
+    public static Subject InProcess(string path)
+    {
+        var assembly = AdapterAssembly.Load(path);
+        var first = assembly.Create();
+        string label = $"--impl {Path.GetFileName(path)} ({Spec.Values.InputQuote.Line(first.Name ?? assembly.TypeName, 60)})";
+        return Subject.External(label, assembly.Create, freshEach: true);
+    }
+
+    /// <summary>Returns a port over protocol v1: one child, started at first use and again after it failed.</summary>
+    /// <param name="commandLine">The command line.</param>
+    /// <param name="timeout">The most one answer may take.</param>
+    /// <param name="maxLineBytes">The most bytes of one answer line.</param>
+    /// <param name="stderrSink">Where the child's stderr lines go (null: kept for messages only).</param>
+    /// <returns>The subject.</returns>
+    public static Subject Served(string commandLine, TimeSpan timeout, int maxLineBytes, Action<string>? stderrSink) =>
+        Subject.External(
+            "--impl-cmd " + Spec.Values.InputQuote.Line(commandLine, 80),
+            () => ProcessAdapter.Start(commandLine, new ProcessAdapterOptions { Timeout = timeout, MaxLineBytes = maxLineBytes, StderrSink = stderrSink }),
+            freshEach: false);
+
+    /// <summary>Reads the harness's environment: a port, or null for the reference (and its planted faults).</summary>
+    /// <returns>The subject, or null.</returns>
+    /// <exception cref="ArgumentException">Both variables are set, or the timeout or line limit is malformed.</exception>
+    /// <exception cref="AdapterLoadException">The assembly holds no usable adapter.</exception>
+    public static Subject? FromEnvironment()
+    {
+        string? dll = Environment.GetEnvironmentVariable(ImplVariable) is { Length: > 0 } d ? d : null;
+        string? cmd = Environment.GetEnvironmentVariable(CommandVariable) is { Length: > 0 } c ? c : null;
+        if (dll is not null && cmd is not null)
+        {
+            throw new ArgumentException($"{ImplVariable} and {CommandVariable} exclude each other");
+        }
+
+        if (dll is not null)
+        {
+            return InProcess(dll);
+        }
+
+        if (cmd is null)
+        {
+            return null;
+        }
+
+        var timeout = ProcessAdapterOptions.DefaultTimeout;
+        if (Environment.GetEnvironmentVariable(TimeoutVariable) is { Length: > 0 } text)
+        {
+            timeout = double.TryParse(text, NumberStyles.Float, CultureInfo.InvariantCulture, out double s) && s is >= 0.1 and <= 3600
+                ? TimeSpan.FromSeconds(s)
+                : throw new ArgumentException($"{TimeoutVariable}: expected seconds from 0.1 to 3600, got '{Spec.Values.InputQuote.Line(text, 40)}'");
+        }
+
+        int bytes = LineLimit.FromEnvironment(out string? problem);
+        return problem is null ? Served(cmd, timeout, bytes, null) : throw new ArgumentException(problem);
+    }
+
+    /// <summary>Says why a target cannot fuzz a port (a parser target, or none of its invariants testable for it), or null.</summary>
+    /// <param name="target">The target.</param>
+    /// <param name="subject">The subject.</param>
+    /// <returns>The reason, or null.</returns>
+    /// <exception cref="AdapterFailureException">A child could not be started.</exception>
+    public static string? Refusal(FuzzTarget target, Subject subject)
+    {
+        ArgumentNullException.ThrowIfNull(target);
+        ArgumentNullException.ThrowIfNull(subject);
+        if (!subject.IsExternal)
+        {
+            return null;
+        }
+
+        return target.WhyNotFuzzable(subject.Shared());
+    }
+}
