@@ -8,7 +8,7 @@ public sealed class DatRecordsTargetTests
     [Fact(DisplayName = "dat-records: every prefix, every single-byte change and every count blown up of every seed is read or refused with DatFormatException only.")]
     public void Mutated_seeds_never_crash_the_reader()
     {
-        var test = FuzzTargets.Find("dat-records")!.CreateTest(null);
+        var test = FuzzTargets.Find("dat-records")!.CreateTest(fault: null);
         var corpus = Path.Combine(RepoPaths.Root, "corpus", "fuzz", "dat-records");
         var seeds = FuzzTargets.Find("dat-records")!.Seeds.Values.Concat(Directory.Exists(corpus) ? Directory.GetFiles(corpus).Select(File.ReadAllBytes) : []).ToList();
         Assert.NotEmpty(seeds);

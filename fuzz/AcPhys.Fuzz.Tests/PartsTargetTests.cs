@@ -38,7 +38,7 @@ public sealed class PartsTargetTests
             var c = Target.Decode(input);
             Assert.InRange(c.Parts.Count, 1, PartsCodec.MaxParts);
             Assert.All(c.Parts, p => Assert.True(float.IsFinite(p.Frame.Origin.X + p.Frame.Origin.Y + p.Bounds.Max.X + p.Bounds.Max.Y + p.Radius)));
-            Assert.Null(Target.Classify(input, null));
+            Assert.Null(Target.Classify(input, fault: null));
         }
     }
 
@@ -71,7 +71,7 @@ public sealed class PartsTargetTests
 
         Assert.Equal(expected.InvariantId, thrown.Violation.InvariantId);
         Assert.Equal(expected.InvariantId, Target.Classify(input, fault)!.Key);
-        Target.CreateTest(null)(input);
+        Target.CreateTest(fault: null)(input);
     }
 
     [Fact]
@@ -87,7 +87,7 @@ public sealed class PartsTargetTests
             Assert.Null(Target.Classify(seed, "ace-every-part-anchors"));
         }
 
-        Assert.All(handMade.Concat(Directory.GetFiles(folder).Select(File.ReadAllBytes)), seed => Assert.Null(Target.Classify(seed, null)));
+        Assert.All(handMade.Concat(Directory.GetFiles(folder).Select(File.ReadAllBytes)), seed => Assert.Null(Target.Classify(seed, fault: null)));
     }
 
     [Theory]

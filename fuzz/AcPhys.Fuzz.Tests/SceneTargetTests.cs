@@ -33,7 +33,7 @@ public sealed class SceneTargetTests
             Assert.NotNull(sw.Recipe);
             Assert.InRange(sw.Scene.Cells.Count + sw.Scene.UnloadedCells.Count, 1, 5);
             Assert.InRange(sw.Walk.Steps.Count, 0, SceneCodec.MaxSteps);
-            Assert.Null(Target.Classify(input, null));
+            Assert.Null(Target.Classify(input, fault: null));
         }
     }
 
@@ -49,7 +49,7 @@ public sealed class SceneTargetTests
         var sw = Target.Decode(input);
 
         Assert.Equal(SceneRoute.LineJitter, sw.Recipe!.Route);
-        Assert.Null(Target.Classify(input, null));
+        Assert.Null(Target.Classify(input, fault: null));
     }
 
     [Fact]
@@ -63,7 +63,7 @@ public sealed class SceneTargetTests
 
         Assert.True(sw.Recipe!.Cottage!.LoadNeighbours);
         Assert.Empty(sw.Scene.UnloadedBlocks);
-        Assert.Null(Target.Classify(input, null));
+        Assert.Null(Target.Classify(input, fault: null));
         var inBlock = new byte[SceneCodec.Length];
         inBlock[8] = 4; // neighbours unloaded
         inBlock[13] = 100; // 100 m into the block: the walk stays in it
@@ -83,7 +83,7 @@ public sealed class SceneTargetTests
 
         Assert.Equal(0, sw.Recipe!.Cottage!.Block.X);
         Assert.True(sw.Walk.Steps.Count < sw.Recipe.Take, $"not cut: {sw.Walk.Steps.Count} steps");
-        Assert.Null(Target.Classify(input, null));
+        Assert.Null(Target.Classify(input, fault: null));
     }
 
     [Fact]
@@ -114,7 +114,7 @@ public sealed class SceneTargetTests
 
         Assert.Equal(expected.InvariantId, thrown.Violation.InvariantId);
         Assert.Equal(expected.InvariantId, Target.Classify(input, fault)!.Key);
-        Target.CreateTest(null)(input); // the correct core passes the same input
+        Target.CreateTest(fault: null)(input); // the correct core passes the same input
     }
 
     [Fact]

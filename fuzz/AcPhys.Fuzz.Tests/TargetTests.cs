@@ -42,7 +42,7 @@ public sealed class TargetTests
         var target = FuzzTargets.Find(name)!;
 
         Assert.NotEmpty(target.Seeds);
-        Assert.All(target.Seeds, s => Assert.Null(target.Classify(s.Value, null)));
+        Assert.All(target.Seeds, s => Assert.Null(target.Classify(s.Value, fault: null)));
     }
 
     [Theory]
@@ -59,7 +59,7 @@ public sealed class TargetTests
         {
             var input = new byte[random.Next(0, 64)];
             random.NextBytes(input);
-            Assert.Null(target.Classify(input, null));
+            Assert.Null(target.Classify(input, fault: null));
         }
     }
 
@@ -102,7 +102,7 @@ public sealed class TargetTests
     [InlineData("walk-json")]
     public void Parser_targets_reject_garbage_cleanly_and_round_trip_what_they_accept(string name)
     {
-        var test = FuzzTargets.Find(name)!.CreateTest(null);
+        var test = FuzzTargets.Find(name)!.CreateTest(fault: null);
         string[] inputs = ["", "{", "null", "[1,2]", "{\"format\":\"acphys-case\",\"version\":1}", "{\"start\":{\"cell\":\"0x00000001\"}}", "\u00ff\u00fe"];
 
         foreach (string s in inputs)
