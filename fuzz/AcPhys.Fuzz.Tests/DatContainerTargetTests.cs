@@ -9,7 +9,7 @@ public sealed class DatContainerTargetTests
     public void Mutated_seeds_never_crash_the_reader()
     {
         var target = FuzzTargets.Find("dat-container")!;
-        var test = target.CreateTest(null);
+        var test = target.CreateTest(fault: null);
         int runs = 0;
         foreach (var seed in target.Seeds.Values)
         {
