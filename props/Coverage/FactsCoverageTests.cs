@@ -135,9 +135,12 @@ public sealed class FactsCoverageTests(ITestOutputHelper output)
     }
 
     // Another mode's answers under a retail declaration (what `acphys serve --announce-retail` serves).
-    private sealed class AnnouncedRetail(ICellPhysics inner) : Forwarding(inner)
+    private sealed class AnnouncedRetail(ICellPhysics inner) : Forwarding(inner), ICellPhysics
     {
         public override PickPolicy Pick => PickPolicy.Retail;
+
+        // A whole walk answered as the inner mode answers it (ace-keeps-stale-cells: one array for the walk, issue 41).
+        public IReadOnlyList<FindCellResult> FindCellWalk(WalkRequest walk) => Inner.FindCellWalk(walk);
 
         public override IndoorFidelity Indoor => IndoorFidelity.Retail;
 
