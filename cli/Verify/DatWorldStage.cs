@@ -140,16 +140,7 @@ internal sealed class DatWorldStage
     private static string Replay(Request request, LandblockId block, VerifySettings settings)
     {
         var words = new List<string> { ReplayLine.Program, "verify", "--cell-dat", request.Cell, "--portal-dat", request.Portal, "--dat-block", block.ToString() };
-        if (settings.Fault is not null)
-        {
-            words.AddRange(["--fault", settings.Fault.Id]);
-        }
-
-        if (settings.Pick != PickPolicy.Retail)
-        {
-            words.AddRange(["--pick", PickNames.Of(settings.Pick)]);
-        }
-
+        words.AddRange(settings.Mode.Words()); // --pick, --fidelity, --fault: every option that changes the verdict (issue 41)
         words.AddRange(settings.Implementation.Words());
         return string.Join(' ', words.Select(ReplayLine.Quote));
     }
