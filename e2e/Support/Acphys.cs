@@ -27,6 +27,15 @@ internal static class Acphys
     public static Run Run(IEnumerable<string> args, IReadOnlyDictionary<string, string>? environment = null)
     {
         var info = Info(args, environment);
+        return RunToEnd(info, "acphys " + string.Join(' ', info.ArgumentList));
+    }
+
+    /// <summary>Starts a process whose output is redirected and waits for it, killing its tree after six minutes.</summary>
+    /// <param name="info">The start info (stdout and stderr redirected).</param>
+    /// <param name="label">How a timeout names the command.</param>
+    /// <returns>Exit code, stdout, stderr and wall time.</returns>
+    public static Run RunToEnd(ProcessStartInfo info, string label)
+    {
         var stopwatch = Stopwatch.StartNew();
         using var process = Process.Start(info)!;
         var stdout = process.StandardOutput.ReadToEndAsync();
@@ -34,7 +43,7 @@ internal static class Acphys
         if (!process.WaitForExit(TimeSpan.FromMinutes(6)))
         {
             process.Kill(entireProcessTree: true);
-            throw new TimeoutException("acphys " + string.Join(' ', info.ArgumentList) + " ran for more than six minutes");
+            throw new TimeoutException(label + " ran for more than six minutes");
         }
 
         return new Run(process.ExitCode, stdout.Result, stderr.Result, stopwatch.Elapsed);

@@ -51,17 +51,7 @@ internal static class GateTestRun
             info.Environment[k] = v;
         }
 
-        var stopwatch = Stopwatch.StartNew();
-        using var process = Process.Start(info)!;
-        var stdout = process.StandardOutput.ReadToEndAsync();
-        var stderr = process.StandardError.ReadToEndAsync();
-        if (!process.WaitForExit(TimeSpan.FromMinutes(6)))
-        {
-            process.Kill(entireProcessTree: true);
-            throw new TimeoutException(info.FileName + " " + string.Join(' ', info.ArgumentList) + " ran for more than six minutes");
-        }
-
-        var run = new Run(process.ExitCode, stdout.Result, stderr.Result, stopwatch.Elapsed);
+        var run = Acphys.RunToEnd(info, info.FileName + " " + string.Join(' ', info.ArgumentList));
         if (trx is null)
         {
             return (run, []);
