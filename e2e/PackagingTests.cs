@@ -61,14 +61,7 @@ public sealed class PackagingTests(PackagingTests.PackedFolder packed) : IClassF
               </ItemGroup>
             </Project>
             """);
-        File.WriteAllText(Path.Combine(project, "nuget.config"), $$"""
-            <configuration>
-              <packageSources>
-                <clear />
-                <add key="packed" value="{{packed.Packages}}" />
-              </packageSources>
-            </configuration>
-            """);
+        WritePackedSource(project);
         var build = Exec("dotnet", ["build", Path.Combine(project, "MyPort.csproj"), "-c", "Release", "-nologo", "-v:quiet"]);
         Assert.True(build.Exit == 0, build.Output);
 
@@ -111,6 +104,14 @@ public sealed class PackagingTests(PackagingTests.PackedFolder packed) : IClassF
               </ItemGroup>
             </Project>
             """);
+        WritePackedSource(project); // xunit, FsCheck and the rest resolve from the global packages folder this repository's restore filled
+        var test = Exec("dotnet", ["test", Path.Combine(project, "MyPortGate.csproj"), "-c", "Release", "-nologo"]);
+        Assert.True(test.Exit == 0, test.Output);
+        Assert.Matches(@"Failed:\s+0, Passed:\s+24, Skipped:\s+19, Total:\s+43", test.Output);
+    }
+
+    // A nuget.config whose only source is the folder the packages were packed into.
+    private void WritePackedSource(string project) =>
         File.WriteAllText(Path.Combine(project, "nuget.config"), $$"""
             <configuration>
               <packageSources>
@@ -118,11 +119,7 @@ public sealed class PackagingTests(PackagingTests.PackedFolder packed) : IClassF
                 <add key="packed" value="{{packed.Packages}}" />
               </packageSources>
             </configuration>
-            """); // xunit, FsCheck and the rest resolve from the global packages folder this repository's restore filled
-        var test = Exec("dotnet", ["test", Path.Combine(project, "MyPortGate.csproj"), "-c", "Release", "-nologo"]);
-        Assert.True(test.Exit == 0, test.Output);
-        Assert.Matches(@"Failed:\s+0, Passed:\s+24, Skipped:\s+19, Total:\s+43", test.Output);
-    }
+            """);
 
     private static (int Exit, string Output) Exec(string file, IEnumerable<string> args)
     {
