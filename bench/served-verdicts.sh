@@ -6,6 +6,8 @@
 #   bench/served-verdicts.sh --faults trunc-floor,nan-as-zero --cases 100
 #   bench/served-verdicts.sh --no-reference --faults ...  # a shard: leave out the unfaulted reference
 #   ACPHYS_DLL=/path/acphys.dll bench/served-verdicts.sh   # another build (default: cli/bin/Release/net10.0/acphys.dll)
+#   bench/served-verdicts.sh --save DIR           # also keep each run's verdicts (DIR/FAULT.in.txt, DIR/FAULT.served.txt)
+#                                                 # so two builds can be compared: diff -r BEFORE AFTER (a refactor guard)
 #
 # Build first: dotnet build -c Release cli/AcPhys.Cli.csproj. The build is copied to a temporary folder, so rebuilding
 # while this runs does not change what it measures. Each run writes JUnit XML (--junit); the verdicts are read from it.
@@ -16,16 +18,18 @@ cases=300
 max_classes=1
 faults=""
 reference=reference
+save=""
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 dll="${ACPHYS_DLL:-$root/cli/bin/Release/net10.0/acphys.dll}"
 
-usage() { sed -n '2,12p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; }
+usage() { sed -n '2,14p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; }
 while [[ $# -gt 0 ]]; do
   case "$1" in
     --cases) cases="$2"; shift 2 ;;
     --max-classes) max_classes="$2"; shift 2 ;;
     --faults) faults="$2"; shift 2 ;;
     --no-reference) reference=""; shift ;;
+    --save) save="$2"; shift 2 ;;
     -h|--help) usage; exit 0 ;;
     *) echo "served-verdicts: unknown option $1" >&2; usage >&2; exit 2 ;;
   esac
@@ -94,6 +98,11 @@ for fault in $reference ${faults//,/ }; do
   fi
   verdicts "$work/in.xml" > "$work/in.txt"
   verdicts "$work/served.xml" > "$work/served.txt"
+  if [[ -n "$save" ]]; then
+    mkdir -p "$save"
+    { cat "$work/in.txt"; echo "exit $rc_in"; } > "$save/$fault.in.txt"
+    { cat "$work/served.txt"; echo "exit $rc_served"; } > "$save/$fault.served.txt"
+  fi
   summary="$(count "$work/in.txt" passed) passed, $(count "$work/in.txt" failed) failed, $(count "$work/in.txt" not-tested) not tested"
   if cmp -s "$work/in.txt" "$work/served.txt" && [[ $rc_in == "$rc_served" ]]; then
     echo "$fault: same ($summary; exit $rc_in; $times)"
