@@ -55,6 +55,12 @@ public enum SceneRoute
 
     /// <summary>Issue 27: into a dungeon hub's corner where a load hint comes early in the closure (<see cref="SceneRecipe.HintHub"/>).</summary>
     HintAhead,
+
+    /// <summary>Issue 41: a sphere exactly at a comparison's bound in the tested cell's frame (<see cref="SceneRecipe.Plan"/>).</summary>
+    ExactBound,
+
+    /// <summary>Issue 41: interiors side by side, a body leaving one while it touches the other (<see cref="SceneRecipe.Plan"/>).</summary>
+    SideBySide,
 }
 
 /// <summary>
@@ -93,13 +99,21 @@ public sealed record SceneRecipe(CottagePlan? Cottage, DungeonPlan? Dungeon, Sce
     /// <summary>Gets the hint-ahead hub, or null (when set, it builds the whole case).</summary>
     public HintHubPlan? HintHub { get; init; }
 
+    /// <summary>Gets a plan that builds the whole case (issue 41), or null.</summary>
+    public ISceneWalkPlan? Plan { get; init; }
+
     /// <summary>Gets the shape class of the scene, for distributions.</summary>
-    public string Shape => NearTouch is { } n ? (n.Target == NearTarget.Building ? $"cottage-{Math.Clamp(n.Cells, 1, 2)}" : $"dungeon-{Math.Max(2, n.Cells)}") : HintHub is not null ? "dungeon-hub" : Hub is not null ? "hub" : Estate is { } e ? $"estate-{e.Layout.ToString().ToLowerInvariant()}-{e.Rooms}" : Cottage is { } c ? $"cottage-{c.Rooms}{(c.Storey ? "+storey" : string.Empty)}" : $"dungeon-{Dungeon!.Cells}";
+    public string Shape => Plan is { } plan ? plan.Shape : NearTouch is { } n ? (n.Target == NearTarget.Building ? $"cottage-{Math.Clamp(n.Cells, 1, 2)}" : $"dungeon-{Math.Max(2, n.Cells)}") : HintHub is not null ? "dungeon-hub" : Hub is not null ? "hub" : Estate is { } e ? $"estate-{e.Layout.ToString().ToLowerInvariant()}-{e.Rooms}" : Cottage is { } c ? $"cottage-{c.Rooms}{(c.Storey ? "+storey" : string.Empty)}" : $"dungeon-{Dungeon!.Cells}";
 
     /// <summary>Builds the case.</summary>
     /// <returns>The scene walk.</returns>
     public SceneWalk Build()
     {
+        if (Plan is { } whole)
+        {
+            return whole.Build(this);
+        }
+
         if (NearTouch is { } near)
         {
             return near.Build(this);
@@ -164,7 +178,8 @@ public sealed record SceneRecipe(CottagePlan? Cottage, DungeonPlan? Dungeon, Sce
     /// <inheritdoc/>
     public override string ToString() =>
         string.Create(CultureInfo.InvariantCulture, $"{Shape} {Route} target {Target} r={Radius}{(Spheres > 0 ? $" spheres {Spheres} r1={Radius1} r2={Radius2}" : TwoSpheres ? " x2" : string.Empty)} step≤{StepMax} jitter {Jitter} take {Take}") +
-        (NearTouch is { } n ? " " + n
+        (Plan is { } pl ? " " + pl
+        : NearTouch is { } n ? " " + n
         : HintHub is { } hh ? " " + hh
         : Hub is { } hb ? " " + hb
         : Estate is { } e ? " " + e

@@ -122,7 +122,8 @@ internal static class FaultyTransit
         {
             float d = portal.Plane.Distance(cell.Frame.GlobalToLocal(s.Center));
             float r = CornerFaults.PlaneRadius(s.Radius, defect);
-            if ((oneSided || d > -r) && d < r)
+            bool inclusive = defect == IndoorDefect.ExitStraddleInclusive; // issue 41: the tie counted as a straddle
+            if ((oneSided || d > -r || (inclusive && d == -r)) && (d < r || (inclusive && d == r)))
             {
                 return true;
             }
@@ -138,7 +139,8 @@ internal static class FaultyTransit
         {
             float d = portal.Plane.Distance(cell.Frame.GlobalToLocal(s.Center));
             float r = CornerFaults.PlaneRadius(s.Radius, defect);
-            if ((portal.PortalSide && d > -r) || (!portal.PortalSide && d < r))
+            bool inclusive = defect == IndoorDefect.HintBoundInclusive; // issue 41: the tie counted as reaching
+            if ((portal.PortalSide && (d > -r || (inclusive && d == -r))) || (!portal.PortalSide && (d < r || (inclusive && d == r))))
             {
                 return true;
             }

@@ -89,4 +89,13 @@ internal enum IndoorDefect
 
     /// <summary>Issue 27: the transit closure's bound is the count minus the hints seen so far.</summary>
     ClosureBoundMinusHints,
+
+    /// <summary>Issue 41: the exit straddle is inclusive (−R ≤ d ≤ R).</summary>
+    ExitStraddleInclusive,
+
+    /// <summary>Issue 41: the load-hint side test is inclusive (PortalSide d ≥ −R, else d ≤ R).</summary>
+    HintBoundInclusive,
+
+    /// <summary>Issue 41: building entry asks only the building of the land cell under sphere 0's centre.</summary>
+    BuildingCentreCellOnly,
 }

@@ -147,6 +147,7 @@ public static class IndoorPortFaults
         SphereTestUnpadded, TransitSphere0Only, PickBeforeTransit, HintStraddleOnly, EarlyReturnUndeclared, PortalGuardInTransit,
         .. FilterOrderFaults.All,
         .. CornerFaults.All,
+        .. InteriorFaults.All,
     ];
 
     /// <summary>Returns the code defect a fault plants in <see cref="FaultySceneQuery"/> (none for a volume or data fault).</summary>
@@ -169,7 +170,7 @@ public static class IndoorPortFaults
         "hint-straddle-only" => IndoorDefect.HintStraddleOnly,
         "early-return-undeclared" => IndoorDefect.EarlyReturnUndeclared,
         "portal-guard-in-transit" => IndoorDefect.PortalGuardInTransit,
-        _ => FilterOrderFaults.DefectOf(fault) is var filter && filter != IndoorDefect.None ? filter : CornerFaults.DefectOf(fault),
+        _ => FilterOrderFaults.DefectOf(fault) is var filter && filter != IndoorDefect.None ? filter : CornerFaults.DefectOf(fault) is var corner && corner != IndoorDefect.None ? corner : InteriorFaults.DefectOf(fault),
     };
 
     /// <summary>Returns the volume decorator a fault plants, or null.</summary>
@@ -180,6 +181,6 @@ public static class IndoorPortFaults
         "close-is-outside" => (v, pieces) => new CloseIsOutsideVolume(v, pieces[0]),
         "sphere-test-unpadded" => (v, pieces) => new UnpaddedSphereVolume(v, pieces[0]),
         "walks-negative-children" => (v, pieces) => new PieceUnionVolume(v, pieces),
-        _ => CornerFaults.VolumeOf(fault),
+        _ => CornerFaults.VolumeOf(fault) ?? InteriorFaults.VolumeOf(fault),
     };
 }

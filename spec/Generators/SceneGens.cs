@@ -55,7 +55,8 @@ public static class SceneGens
             select new SceneRecipe(null, d, back, 0, body.Radius, body.Two, body.Step, body.Jitter, int.MaxValue)),
         (7, EstateGens.Recipes),
         (1, HubGens.Recipes),
-        (1, CornerGens.Recipes));
+        (1, CornerGens.Recipes),
+        (1, InteriorGens.Recipes));
 
     /// <summary>Gets the arbitrary for scene walks, with the recipe shrinker.</summary>
     public static Arbitrary<SceneWalk> Arbitrary { get; } = Arb.From(Recipes.Select(r => r.Build()), SceneShrinker.Shrink);

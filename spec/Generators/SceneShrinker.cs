@@ -44,6 +44,11 @@ public static class SceneShrinker
             yield return corner;
         }
 
+        foreach (var plan in r.Plan?.Shrink() ?? [])
+        {
+            yield return r with { Plan = plan };
+        }
+
         if (r.Estate is not null)
         {
             foreach (var e in EstateShrinker.Recipes(r))

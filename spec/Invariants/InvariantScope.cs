@@ -50,6 +50,7 @@ public static class InvariantScope
         ["HITS-INTERIOR"] = (Scope.Retail, "facts §1.1, §4 steps 3 and 4b, §5.3"),
         ["LAND-VIA-EXIT"] = (Scope.Retail, "facts §3.3, §5.1, §6.9"),
         ["PICK-FIRST-ENV"] = (Scope.Retail, "facts §4 step 4b, §5.5, §5.7, §6.8"),
+        ["TIES-PINNED-INDOOR"] = (Scope.Retail, "facts §1.5, §5.1, §5.3, §5.4, §5.7, §6.10"),
         ["LANDDEFS-CONFORMANCE"] = (Scope.Retail, "facts §1, §2 (the retail-faithful reference)" + FiniteOnly),
         ["OUTSIDE-CELLS-CONFORMANCE"] = (Scope.Retail, "facts §3.1–§3.3 (the retail-faithful reference); non-finite centres judged only by NONFINITE-SPHERE-ENDS-LOOP (facts §6.17)"),
         ["FIND-CELL-QUERY-CONFORMANCE"] = (Scope.Retail, "facts §3.2, §3.3, §4, §6.5, §6.7, §6.12 (the retail-faithful reference); non-finite centres judged only by NONFINITE-SPHERE-ENDS-LOOP (facts §6.17)"),

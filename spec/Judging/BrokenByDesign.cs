@@ -31,7 +31,7 @@ public static class BrokenByDesign
         // body's reach, a hint the body no longer straddles the portal of, picked as the containing cell without a portal
         // between). The array lives for one walk (ReferenceAdapter.FindCellWalk), so VISIBILITY, SCENE-TRANSLATION and
         // NEVER-NULL, which failed while it lived for a whole run, are judged again (issue 41).
-        new("ace-keeps-stale-cells", "§7 #6, §4 step 1: the array is not cleared between the queries of a walk", ["PORTAL-TRANSIT", "NO-TUNNEL", "SCENE-SOUNDNESS", "ENV-CANDIDATE-JUSTIFIED"]),
+        new("ace-keeps-stale-cells", "§7 #6, §4 step 1: the array is not cleared between the queries of a walk", ["PORTAL-TRANSIT", "NO-TUNNEL", "SCENE-SOUNDNESS", "ENV-CANDIDATE-JUSTIFIED", "TIES-PINNED-INDOOR"]),
     ];
 
     /// <summary>Gets every (switch, invariant) pair the table exempts, in table order.</summary>
