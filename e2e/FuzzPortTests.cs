@@ -13,6 +13,7 @@ public sealed class FuzzPortTests : IDisposable
 {
     // Crash inputs from campaigns on this machine (the seed field of the regressions they became).
     private const string MapEdgeInput = "00ffffff1701"; // land: a cell in block row 0xFF, which inbound-x-only accepts
+    private const string HangInput = "0001ac2b4a"; // land: mode 0, cell 0x4A2BAC01 (the example port's hang bug), the rest zero
     private const string TruncFloorInput = "00ffdd00000800409fffffff01fffffff51100000000409fffffff0101006f"; // land: x just below 0
 
     private readonly string work = Path.Combine(Path.GetTempPath(), "acphys-fuzz-port-" + Guid.NewGuid().ToString("N"));
@@ -100,6 +101,26 @@ public sealed class FuzzPortTests : IDisposable
         {
             Directory.Delete(work, recursive: true);
         }
+    }
+
+    [Fact(DisplayName = "fuzz --impl: an input that hangs the in-process port (afl's hangs/) is a HANG finding in the port's hangs/ folder; its replay line names the port and exits 2 on it (the watchdog), 0 on the reference and on the clean port")]
+    public void ImplHangIsAFindingOfItsOwnKind()
+    {
+        var bug = new Dictionary<string, string> { ["ACPHYS_PORT_BUG"] = "hang" };
+        string hangs = Path.Combine(work, "campaign", "sync", "main", "hangs");
+        Directory.CreateDirectory(hangs);
+        File.WriteAllBytes(Path.Combine(hangs, "id:000000,src:000000,time:1,execs:1,op:havoc,rep:1"), Convert.FromHexString(HangInput));
+        var run = Acphys.Run(["fuzz", "--target", "land", "--impl", GateTestRun.ExamplePortDll, "--triage-only", "--campaign", Path.Combine(work, "campaign"), "--regressions", Regressions, "--quiet"], bug);
+        Assert.True(run.Exit == 1, run.ToString());
+        string file = Assert.Single(Directory.GetFiles(Path.Combine(Regressions, "hangs"), "land-HANG-*.json"));
+        Assert.Contains("HANG", run.Out, StringComparison.Ordinal);
+        Assert.Contains($"replay: acphys replay {file} --impl {GateTestRun.ExamplePortDll}", run.Out, StringComparison.Ordinal);
+
+        var replay = Acphys.Run(["replay", file, "--impl", GateTestRun.ExamplePortDll], bug); // the printed line
+        Assert.True(replay.Exit == 2, replay.ToString());
+        Assert.Contains("did not return from", replay.Err, StringComparison.Ordinal);
+        Assert.Equal(0, Acphys.Run(["replay", file]).Exit);
+        Assert.Equal(0, Acphys.Run(["replay", file, "--impl", GateTestRun.ExamplePortDll]).Exit);
     }
 
     // One crash file where afl-fuzz writes them, then triage alone.

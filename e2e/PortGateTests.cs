@@ -56,7 +56,26 @@ public sealed partial class PortGateTests
             Assert.Contains(block, gate[id].Text.ReplaceLineEndings("\n"), StringComparison.Ordinal);
         }
 
-        Assert.Single(rows, r => r.Name.EndsWith(".OffersSomethingToTest", StringComparison.Ordinal) && r.Outcome == "Passed");
+        Assert.Single(rows, r => r.Name.EndsWith(".TestsAtLeastMinTested", StringComparison.Ordinal) && r.Outcome == "Passed");
+    }
+
+    [Fact(DisplayName = "PORT-GATE: a port testing fewer invariants than its floor (ACPHYS_MIN_TESTED, as verify --min-tested) fails the gate tests with a clear message; a malformed floor is named")]
+    public void GateTests_FailUnderTheFloor()
+    {
+        string folder = Path.Combine(Path.GetTempPath(), "acphys-e2e-port-gate-floor");
+        string trx = Path.Combine(folder, "floor.trx");
+        string[] args = ["test", GateTestRun.ExampleGateDll, "--filter", "FullyQualifiedName~TestsAtLeastMinTested", "--logger", "trx;LogFileName=" + trx];
+        var (under, rows) = GateTestRun.Dotnet(args, trx, new Dictionary<string, string> { ["ACPHYS_MIN_TESTED"] = "30" });
+        Assert.True(under.Exit == 1, under.ToString());
+        var row = Assert.Single(rows);
+        Assert.Equal("Failed", row.Outcome);
+        Assert.Contains("not a pass: 23 of 42 invariants tested, fewer than the floor 30 (ACPHYS_MIN_TESTED); example-port announces blockid_to_lcoord,", row.Text, StringComparison.Ordinal);
+        Assert.Contains("not tested: ", row.Text, StringComparison.Ordinal);
+
+        File.Delete(trx);
+        var (malformed, bad) = GateTestRun.Dotnet(args, trx, new Dictionary<string, string> { ["ACPHYS_MIN_TESTED"] = "lots" });
+        Assert.True(malformed.Exit == 1, malformed.ToString());
+        Assert.Contains("ACPHYS_MIN_TESTED='lots' must be a whole number from 1 to 42", Assert.Single(bad).Text, StringComparison.Ordinal);
     }
 
     // verify's block of one failure: from its FAIL line to the line before the next blank line.

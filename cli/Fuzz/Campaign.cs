@@ -124,6 +124,12 @@ internal sealed class Campaign(FuzzSettings s, CancellationToken stop)
         crashFiles.AddRange(Directory.EnumerateFiles(Path.Combine(s.CampaignDir, "seed-crashes")));
         Say($"triage: {crashFiles.Count} crash input(s)");
         var groups = new CrashTriage(s, subject).Run(crashFiles);
+        var hangFiles = Directory.Exists(s.SyncDir) ? Directory.EnumerateDirectories(s.SyncDir).SelectMany(InstanceStats.HangFiles).ToList() : [];
+        if (new HangTriage(s, CancellationToken.None).Run(hangFiles) is { } hang)
+        {
+            Say($"triage: {hangFiles.Count} hang input(s) of the in-process port");
+            groups = [.. groups, hang];
+        }
 
         string cmin = GrowSeedCorpus();
         string summary = Summary(stats, wall, firstCrashWall, stopped, seedCrashes, groups, cmin);

@@ -69,6 +69,14 @@ internal sealed partial record InstanceStats(string Name, long Execs, double Exe
                 .SelectMany(d => Directory.EnumerateFiles(d, "id:*"))
                 .Order(StringComparer.Ordinal);
 
+    /// <summary>Lists an instance's hang files: <c>hangs/</c> and the <c>hangs.DATE/</c> folders afl-fuzz keeps on resume.</summary>
+    /// <param name="dir">The instance folder.</param>
+    /// <returns>The files.</returns>
+    public static IEnumerable<string> HangFiles(string dir) =>
+        !Directory.Exists(dir)
+            ? []
+            : Directory.EnumerateDirectories(dir, "hangs*").SelectMany(d => Directory.EnumerateFiles(d, "id:*")).Order(StringComparer.Ordinal);
+
     /// <summary>Gives the executions per second of <paramref name="execs"/> over <paramref name="ms"/> of fuzzing, or 0 under a second (no honest rate yet).</summary>
     /// <param name="execs">Executions.</param>
     /// <param name="ms">Milliseconds of fuzzing.</param>

@@ -20,6 +20,9 @@ public enum Bug
 
     /// <summary><c>inbound-x-only</c>: inbound_valid_cellid tests only the x byte (ACE's, facts §2 and §7).</summary>
     InboundXOnly,
+
+    /// <summary><c>hang</c>: inbound_valid_cellid never returns for one id (<see cref="Bugs.HangCell"/>), as a port's endless loop would: a finding of its own kind for <c>acphys fuzz --impl</c> (HANG), not an invariant's.</summary>
+    Hang,
 }
 
 /// <summary>Reads <c>ACPHYS_PORT_BUG</c>.</summary>
@@ -32,7 +35,21 @@ public static class Bugs
         ["trunc"] = Bug.Trunc,
         ["edge-off-by-one"] = Bug.EdgeOffByOne,
         ["inbound-x-only"] = Bug.InboundXOnly,
+        ["hang"] = Bug.Hang,
     };
+
+    /// <summary>The id <see cref="Bug.Hang"/> never returns for: an env cell no seed of the land target holds.</summary>
+    public const uint HangCell = 0x4A2BAC01;
+
+    /// <summary>Never returns (sleeping, so a hang costs no CPU).</summary>
+    /// <returns>Nothing: it never returns.</returns>
+    public static bool Forever()
+    {
+        while (true)
+        {
+            Thread.Sleep(100);
+        }
+    }
 
     /// <summary>Returns the bug the environment switches on.</summary>
     /// <returns>The bug, <see cref="Bug.None"/> when unset.</returns>

@@ -49,7 +49,7 @@ public sealed class ExamplePort : ICellPhysics
     public CellId LcoordToGid(int x, int y) => grid.CellAt(x, y);
 
     /// <inheritdoc/>
-    public bool InboundValidCellId(CellId id) => grid.InboundValid(id);
+    public bool InboundValidCellId(CellId id) => bug == Bug.Hang && id.Value == Bugs.HangCell ? Bugs.Forever() : grid.InboundValid(id);
 
     /// <inheritdoc/>
     public bool GetOutsideLcoord(CellId id, float x, float y, out Lcoord lcoord) => Out(grid.ColumnUnder(id, x, y), out lcoord);

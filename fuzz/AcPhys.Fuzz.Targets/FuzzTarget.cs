@@ -39,6 +39,16 @@ public abstract class FuzzTarget
     /// <exception cref="ArgumentException">The fault is unknown, or the target takes no faults.</exception>
     public abstract Action<ReadOnlySpan<byte>> CreateTest(string? fault);
 
+    /// <summary>
+    /// Returns an input as a corpus entry without running any implementation (a physics target's decoded case), or
+    /// null when the target has no stored case format: how an input that hangs a port is kept and replayed.
+    /// </summary>
+    /// <param name="input">The input.</param>
+    /// <param name="title">The entry's title.</param>
+    /// <param name="origin">Where the input came from.</param>
+    /// <returns>The entry, or null.</returns>
+    public virtual CorpusEntry? AsEntry(byte[] input, string title, string origin) => null;
+
     /// <summary>Runs one input again and says what fails, or null when it passes.</summary>
     /// <param name="input">The input.</param>
     /// <param name="fault">The planted fault the campaign ran, or null.</param>

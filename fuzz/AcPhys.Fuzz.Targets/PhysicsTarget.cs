@@ -112,6 +112,10 @@ public abstract class PhysicsTarget<TCase> : FuzzTarget
     }
 
     /// <inheritdoc/>
+    public override CorpusEntry? AsEntry(byte[] input, string title, string origin) =>
+        CorpusEntry.From(Decode(input), title, null, FinderNames.Fuzz, origin);
+
+    /// <inheritdoc/>
     public override CorpusEntry? Minimise(Finding finding, string? fault, string origin) => Minimise(finding, Subject.Of(fault), origin);
 
     /// <summary>

@@ -22,15 +22,15 @@ internal abstract class Forwarding(ICellPhysics inner) : ICellPhysics
 
     public bool BlockIdToLcoord(CellId id, out Lcoord lcoord) => Inner.BlockIdToLcoord(id, out lcoord);
 
-    public bool GidToLcoord(CellId id, out Lcoord lcoord) => Inner.GidToLcoord(id, out lcoord);
+    public virtual bool GidToLcoord(CellId id, out Lcoord lcoord) => Inner.GidToLcoord(id, out lcoord);
 
     public CellId LcoordToGid(int x, int y) => Inner.LcoordToGid(x, y);
 
-    public bool InboundValidCellId(CellId id) => Inner.InboundValidCellId(id);
+    public virtual bool InboundValidCellId(CellId id) => Inner.InboundValidCellId(id);
 
-    public bool GetOutsideLcoord(CellId id, float x, float y, out Lcoord lcoord) => Inner.GetOutsideLcoord(id, x, y, out lcoord);
+    public virtual bool GetOutsideLcoord(CellId id, float x, float y, out Lcoord lcoord) => Inner.GetOutsideLcoord(id, x, y, out lcoord);
 
-    public AdjustResult AdjustToOutside(CellId id, float x, float y) => Inner.AdjustToOutside(id, x, y);
+    public virtual AdjustResult AdjustToOutside(CellId id, float x, float y) => Inner.AdjustToOutside(id, x, y);
 
     public IReadOnlyList<CellId> OutsideCells(CellId cell, IReadOnlyList<Sphere> spheres) => Inner.OutsideCells(cell, spheres);
 

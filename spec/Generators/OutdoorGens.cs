@@ -41,7 +41,8 @@ public static class OutdoorGens
 
     /// <summary>
     /// Gets the positions a query may come from (facts §6.12, §4 step 3): land cells (most), an env cell or the block id
-    /// 0xFFFF of an on-map block (both reach the land under them), id 0, a malformed low word, a 0xFF block byte.
+    /// 0xFFFF of an on-map block (both reach the land under them), id 0, a malformed low word, a 0xFF block byte, and
+    /// every bound of the low-word ranges (<see cref="LandGens.LowWordBounds"/>: 0x0100 is the first indoor position).
     /// </summary>
     public static Gen<CellId> Positions { get; } = Gen.Frequency(
         (26, Cells),
@@ -49,6 +50,7 @@ public static class OutdoorGens
         (2, Cells.Select(c => new CellId(c.BlockX, c.BlockY, 0xFFFF))),
         (1, Gen.Constant(CellId.None)),
         (1, Gen.Zip(Cells, Gen.Elements(0, 65, 0xFF, 0xFFFE)).Select(t => new CellId(t.Item1.BlockX, t.Item1.BlockY, (ushort)t.Item2))),
+        (1, Gen.Zip(Cells, Gen.Elements(LandGens.LowWordBounds.ToArray())).Select(t => new CellId(t.Item1.BlockX, t.Item1.BlockY, t.Item2))),
         (1, Gen.Zip(Cells, Gen.Elements(true, false)).Select(t => t.Item2 ? new CellId(0xFF, t.Item1.BlockY, t.Item1.Low) : new CellId(t.Item1.BlockX, 0xFF, t.Item1.Low))));
 
     /// <summary>
