@@ -6,6 +6,8 @@
 #   fuzz/tests/port.sh rates   [SECONDS]        exec/s, 1 job, SECONDS of afl time per campaign (default 30)
 #   fuzz/tests/port.sh seeded  [RUNS]           the examples' seeded bugs, --until-crash (default 1 run each)
 #   fuzz/tests/port.sh served  [RUNS] [FAULT…]  planted faults served over protocol and in process, --until-crash
+#   fuzz/tests/port.sh clean   [MINUTES]        clean ports, no finding expected: examples/dotnet-port in process (land,
+#                                               walk: its ops) and acphys serve (land, walk, scene, parts), default 10 min
 #
 # Needs the builds (./acphys fuzz once, and once with --impl) and examples/dotnet-adapter built (Release).
 # MINUTES caps each --until-crash run (default 2); TIMEOUT_MS sets afl-fuzz -t for both sides of `served` (the scene
@@ -17,6 +19,7 @@ acphys=(dotnet "$root/cli/bin/Release/net10.0/acphys.dll")
 serve="dotnet $root/cli/bin/Release/net10.0/acphys.dll serve"
 python="python3 $root/examples/python/acphys_impl.py"
 example=$root/examples/dotnet-adapter/bin/Release/net10.0/ExampleAdapter.dll
+port=$root/examples/dotnet-port/bin/Release/net10.0/ExamplePort.dll
 out=$root/.fuzz/port
 minutes=${MINUTES:-2}
 mkdir -p "$out"
@@ -101,6 +104,22 @@ served)
         done
     done
     ;;
+clean)
+    m=${2:-10}
+    echo "| target | implementation | minutes | execs, exec/s | findings | port edges | load before / after |"
+    echo "| --- | --- | --- | --- | --- | --- | --- |"
+    # (target, words) pairs: the example port where it has the ops, then the reference served over protocol v1.
+    for spec in "land|--impl|$port" "walk|--impl|$port" "land|--impl-cmd|$serve" "walk|--impl-cmd|$serve" \
+        "scene|--impl-cmd|$serve" "parts|--impl-cmd|$serve"; do
+        IFS='|' read -r target flag impl <<<"$spec"
+        name=clean-$target-${flag#--}
+        before=$(cut -d' ' -f1 /proc/loadavg)
+        r=$(run "$name" "$target" --minutes "$m" "$flag" "$impl")
+        findings=$(grep -m1 '^  findings:' "$out/$name.txt" | sed 's/^  findings: //' || true)
+        edges=$(grep -m1 '^  port coverage:' "$out/$name.txt" | sed -E 's/.*coverage: ([0-9]+) .* over ([0-9]+) probe.*/\1 of \2/' || true)
+        echo "| $target | ${flag} $(basename "${impl%% serve}") | $m | ${r%%|*} | ${findings:-?} | ${edges:--} | $before / $(cut -d' ' -f1 /proc/loadavg) |"
+    done
+    ;;
 *)
-    sed -n '2,12p' "$0"; exit 2 ;;
+    sed -n '2,14p' "$0"; exit 2 ;;
 esac
