@@ -71,7 +71,8 @@ def block_offset(position, cell):
 
 def plane(item):
     """A plane {n, d} with its normal made unit length, so distances are metres (docs/indoor.md, "Planes")."""
-    (nx, ny, nz), d = (float(v) for v in item["n"]), float(item["d"])
+    # Scene numbers are float32 values written as their shortest decimals: read them back as those float32 values.
+    (nx, ny, nz), d = (f32(float(v)) for v in item["n"]), f32(float(item["d"]))
     length = (nx * nx + ny * ny + nz * nz) ** 0.5
     if not length > 0:
         raise SceneError("a plane with a zero normal")
@@ -85,7 +86,7 @@ def distance(p, point):
 def piece_planes(piece):
     """A convex piece's inner half-spaces (N·p + D >= 0 inside): an axis-aligned box or a list of planes."""
     if "box" in piece:
-        (x0, y0, z0), (x1, y1, z1) = piece["box"]["min"], piece["box"]["max"]
+        (x0, y0, z0), (x1, y1, z1) = ([f32(float(v)) for v in piece["box"][k]] for k in ("min", "max"))
         return [(1.0, 0.0, 0.0, -x0), (-1.0, 0.0, 0.0, x1), (0.0, 1.0, 0.0, -y0),
                 (0.0, -1.0, 0.0, y1), (0.0, 0.0, 1.0, -z0), (0.0, 0.0, -1.0, z1)]
     return [plane(p) for p in piece["planes"]]
@@ -99,7 +100,7 @@ class EnvCell:
 
     def __init__(self, item):
         self.id = read_id(item["id"])
-        self.origin = tuple(float(v) for v in item["frame"]["origin"])
+        self.origin = tuple(f32(float(v)) for v in item["frame"]["origin"])
         w, x, y, z = (float(v) for v in item["frame"]["rotation"])   # W, X, Y, Z: dat order
         # The rows of Rᵀ for the unit quaternion: local = Rᵀ·(p − origin) (AFrame.GlobalToLocal, facts §5.8).
         self.rows = ((1 - 2 * (y * y + z * z), 2 * (x * y + w * z), 2 * (x * z - w * y)),

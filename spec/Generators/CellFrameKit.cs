@@ -60,18 +60,51 @@ public static class CellFrameKit
         return blocks;
     }
 
-    /// <summary>Returns the float32 radius r with r + pad == threshold exactly (so the tie is reachable on a coarse grid).</summary>
+    /// <summary>
+    /// Returns a float32 radius r with r + pad == threshold exactly in float32 (retail's R, facts §1.5) whose exact sum
+    /// with the padding written as a double literal (0.01, 0.0002) is not above the threshold either, so a port that
+    /// computes R in double decides the tie as retail does (docs/conformance.md, "Numerical ties"); NaN when none is.
+    /// </summary>
     /// <param name="threshold">The threshold r + pad, a multiple of 1/1024.</param>
     /// <param name="pad">The test's padding (0.01 or EPS).</param>
-    /// <returns>The radius.</returns>
+    /// <returns>The radius, or NaN.</returns>
     public static float RadiusFor(float threshold, float pad)
     {
+        double padDouble = Math.Max(pad, pad == 0.01f ? 0.01 : 0.0002);
         float r = threshold - pad;
-        for (int k = 0; k < 16 && r + pad != threshold; k++)
+        for (int k = 0; k < 24; k++)
         {
-            r = r + pad < threshold ? MathF.BitIncrement(r) : MathF.BitDecrement(r);
+            r = MathF.BitIncrement(r);
         }
 
-        return r;
+        for (int k = 0; k < 48; k++, r = MathF.BitDecrement(r))
+        {
+            if (r + pad == threshold && r + padDouble <= threshold)
+            {
+                return r;
+            }
+        }
+
+        return float.NaN;
+    }
+
+    /// <summary>
+    /// Returns the threshold nearest below mesh/1024 (halved when above 505/1024: above 1/2 no float32 radius has the
+    /// EPS sum rounding to the threshold from below) that has a radius (<see cref="RadiusFor"/>).
+    /// </summary>
+    /// <param name="mesh">The starting mesh, 200–1024.</param>
+    /// <param name="pad">The padding.</param>
+    /// <returns>The threshold.</returns>
+    public static float ThresholdFrom(int mesh, float pad)
+    {
+        for (int m = mesh > 505 ? mesh / 2 : mesh; m >= 64; m--)
+        {
+            if (!float.IsNaN(RadiusFor(m / 1024f, pad)))
+            {
+                return m / 1024f;
+            }
+        }
+
+        throw new InvalidOperationException($"no float32 radius has r + {pad:R} == m/1024 for m up to {mesh}");
     }
 }

@@ -32,8 +32,8 @@ public sealed record ExactBoundPlan(NearTarget Target, double WorldX, double Wor
     /// <summary>Gets the padding of the target's test: the BSP's 0.01 or the portal planes' EPS (facts §1.5).</summary>
     public float Pad => Target is NearTarget.Neighbour or NearTarget.Building ? 0.01f : LandDefs.Epsilon;
 
-    /// <summary>Gets the bound R = r + pad, exact in float32.</summary>
-    public float Bound => Mesh / 1024f;
+    /// <summary>Gets the bound R = r + pad, exact in float32: the first multiple of 1/1024 from Mesh/1024 whose radius a double-arithmetic port also puts on retail's side of the tie.</summary>
+    public float Bound => CellFrameKit.ThresholdFrom(Mesh, Pad);
 
     /// <summary>Gets the sphere's radius (r + <see cref="Pad"/> == <see cref="Bound"/> in float32).</summary>
     public float Radius => CellFrameKit.RadiusFor(Bound, Pad);

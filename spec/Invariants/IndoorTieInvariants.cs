@@ -11,14 +11,16 @@ namespace AcPhys.Spec.Invariants;
 /// away explains (docs/conformance.md, "Numerical ties"), so they cannot tell `&lt;` from `&lt;=` at a tie; this statement
 /// can, where the tie is no rounding at all: the tested cell's frame, the plane and the centre give the same distance in
 /// float32 (after GlobalToLocal, as retail computes it) and in double, and it equals the bound R = r + pad rounded once
-/// to float32 (facts §1.5: R is a float32 sum in retail).
+/// to float32 (facts §1.5: R is a float32 sum in retail), and a port that computes R in double (r + 0.01, r + 0.0002)
+/// decides the tie the same way (found: the Python example, which computes in double, entered a neighbour at a
+/// near-touch tie whose exact sum r + 0.01 is above the float32 R).
 /// </summary>
 public static class IndoorTieInvariants
 {
     /// <summary>TIES-PINNED-INDOOR.</summary>
     public static readonly Invariant<SceneWalk> TiesPinned = new(
         "TIES-PINNED-INDOOR",
-        "At an exact bound (the same distance in float32 after GlobalToLocal and in double, equal to R = r + pad in float32) retail's comparison is false: a loaded env cell every sphere is at d = −(r + 0.01) from (BSP test: Outside) or clear of by more than 1 mm is no candidate unless it is the position; with no filter, a transition from an env position adds no land cell when every sphere is at |d| = r + EPS from every exit plane of the walked env candidates or clear of straddling it by more than 1 mm, and no load hint for a cell every sphere is at the side test's bound or clear of by more than 1 mm.",
+        "At an exact bound (the same distance in float32 after GlobalToLocal and in double, equal to R = r + pad in float32, and R in double, r + 0.01 or r + 0.0002, not above it, so double arithmetic decides it alike) retail's comparison is false: a loaded env cell every sphere is at d = −(r + 0.01) from (BSP test: Outside) or clear of by more than 1 mm is no candidate unless it is the position; with no filter, a transition from an env position adds no land cell when every sphere is at |d| = r + EPS from every exit plane of the walked env candidates or clear of straddling it by more than 1 mm, and no load hint for a cell every sphere is at the side test's bound or clear of by more than 1 mm.",
         "facts §1.5, §5.1, §5.3, §5.4, §5.7, §6.10",
         Op.None,
         SceneDomain.Instance,
@@ -96,7 +98,8 @@ public static class IndoorTieInvariants
             return Side.Clear;
         }
 
-        return d64 == -(double)bound && Depth32(cell.Source, p) == -bound ? Side.Tie : Side.Neither;
+        // A port computing R = r + 0.01 in double must decide it the same way (docs/conformance.md, "Numerical ties").
+        return d64 == -(double)bound && bound >= r + 0.01 && Depth32(cell.Source, p) == -bound ? Side.Tie : Side.Neither;
     }
 
     // Exit straddles of the walked env candidates in a transition from an env position (facts §5.1).
@@ -120,7 +123,7 @@ public static class IndoorTieInvariants
                     continue;
                 }
 
-                bool tie = Math.Abs(d64) == bound && MathF.Abs(Distance32(cell.Source, k, p)) == bound;
+                bool tie = Math.Abs(d64) == bound && bound >= sp.Radius + 0.0002 && MathF.Abs(Distance32(cell.Source, k, p)) == bound;
                 tied |= tie;
                 decided &= tie;
             }
@@ -154,7 +157,7 @@ public static class IndoorTieInvariants
                         continue; // clear: PortalSide and d < −R − 1 mm, or the other side and d > R + 1 mm
                     }
 
-                    bool tie = d64 == sign * bound && Distance32(cell.Source, k, p) == sign * bound;
+                    bool tie = d64 == sign * bound && bound >= sp.Radius + 0.0002 && Distance32(cell.Source, k, p) == sign * bound;
                     tied |= tie;
                     decided &= tie;
                 }
