@@ -1,6 +1,7 @@
 using System.Text;
+using AcPhys.Protocol.Messages;
 
-namespace AcPhys.Spec.Protocol;
+namespace AcPhys.Protocol.Child;
 
 /// <summary>
 /// A request line on its way to a pipelining child: kept as the UTF-8 bytes it is written as, and spelt as text only

@@ -1,6 +1,6 @@
 using System.Runtime.InteropServices;
 
-namespace AcPhys.Spec.Protocol;
+namespace AcPhys.Protocol.Child;
 
 /// <summary>poll(2) on one descriptor (Linux and macOS): how the tool waits for a child's answer with a timeout on the
 /// thread that then reads it (<see cref="LineProcess"/>).</summary>

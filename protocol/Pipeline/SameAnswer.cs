@@ -1,7 +1,7 @@
 using AcPhys.Core;
 using AcPhys.Spec.Adapters;
 
-namespace AcPhys.Spec.Protocol;
+namespace AcPhys.Protocol.Pipeline;
 
 /// <summary>
 /// Whether two decoded answers are the same value to every reader: a check that is handed one cannot tell it from the

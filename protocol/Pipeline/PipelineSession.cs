@@ -1,8 +1,11 @@
 using System.Collections.Concurrent;
 using System.Diagnostics;
+using AcPhys.Protocol.Child;
+using AcPhys.Protocol.Messages;
 using AcPhys.Spec.Adapters;
+using AcPhys.Spec.Values;
 
-namespace AcPhys.Spec.Protocol;
+namespace AcPhys.Protocol.Pipeline;
 
 /// <summary>
 /// One speculative run against a child that announced <c>pipeline</c> (docs/protocol.md, "Pipelining"). In the first
@@ -81,6 +84,7 @@ internal sealed class PipelineSession : IDisposable
     /// <summary>Asks one query (not a scene load or unload) in the current pass.</summary>
     /// <typeparam name="T">The answer type.</typeparam>
     /// <param name="name">The op name (for messages and the replay's check).</param>
+    /// <param name="shape">The answer's shape: a child's line that is the guess's expected line is the guess, unparsed.</param>
     /// <param name="request">Builds the request line (it may load a scene first).</param>
     /// <param name="interpret">Reads an answer line to the request as the live call does: the value, or the exception it throws.</param>
     /// <param name="guess">The speculated answer, or null when none can be made.</param>
@@ -88,7 +92,7 @@ internal sealed class PipelineSession : IDisposable
     /// <returns>The answer.</returns>
     /// <remarks>A query that throws while its request is built takes no slot: the next query gets the slot it would have
     /// had, so every later answer stays paired with its own query in every pass.</remarks>
-    public T Query<T>(string name, Func<RequestLine> request, Func<string, string, T> interpret, Func<T>? guess, Func<T> live)
+    public T Query<T>(string name, Answer<T> shape, Func<RequestLine> request, Func<string, string, T> interpret, Func<T>? guess, Func<T> live)
     {
         int at = next;
         if (at < frontier || at == divergedAt || at >= liveFrom)
@@ -99,19 +103,20 @@ internal sealed class PipelineSession : IDisposable
                 : Live(live);
         }
 
-        return Speculate(at, name, request, interpret, guess);
+        return Speculate(at, name, shape, request, interpret, guess);
     }
 
     /// <summary>Sends a scene load or unload within the speculative pass, answered at once with its guess.</summary>
     /// <typeparam name="T">The answer type.</typeparam>
     /// <param name="name">The op name.</param>
+    /// <param name="shape">The answer's shape.</param>
     /// <param name="request">The request line.</param>
     /// <param name="interpret">Reads the answer line.</param>
     /// <param name="guess">The answer a conforming child gives (its id echoed, or ok).</param>
     /// <param name="loads">The id the request loads, or null.</param>
     /// <param name="unloads">The id the request unloads, or null.</param>
     /// <returns>The guess.</returns>
-    public T Transport<T>(string name, RequestLine request, Func<string, string, T> interpret, T guess, string? loads, string? unloads)
+    public T Transport<T>(string name, Answer<T> shape, RequestLine request, Func<string, string, T> interpret, T guess, string? loads, string? unloads)
     {
         if (loads is not null)
         {
@@ -124,7 +129,7 @@ internal sealed class PipelineSession : IDisposable
         int owner = building >= 0 ? building : next;
         Send(new Sent(owner, name, request, true, line =>
         {
-            bool same = ExpectedAnswer.Is(line.Bytes, guess) || SameAnswer.Of(interpret(request.Text, line.Text), guess);
+            bool same = shape.Is(line.Bytes, guess) || SameAnswer.Of(interpret(request.Text, line.Text), guess);
             if (same && unloads is not null)
             {
                 lock (sync)
@@ -209,7 +214,7 @@ internal sealed class PipelineSession : IDisposable
     }
 
     // The request is built (its scene loads streamed, owned by the slot to come) before the slot is taken.
-    private T Speculate<T>(int at, string name, Func<RequestLine> request, Func<string, string, T> interpret, Func<T>? guess)
+    private T Speculate<T>(int at, string name, Answer<T> shape, Func<RequestLine> request, Func<string, string, T> interpret, Func<T>? guess)
     {
         int outer = building;
         building = at;
@@ -245,7 +250,7 @@ internal sealed class PipelineSession : IDisposable
 
         if (guessed)
         {
-            Send(new Sent(at, name, line, false, answer => ExpectedAnswer.Is(answer.Bytes, value) || SameAnswer.Of(interpret(line.Text, answer.Text), value)));
+            Send(new Sent(at, name, line, false, answer => shape.Is(answer.Bytes, value) || SameAnswer.Of(interpret(line.Text, answer.Text), value)));
             return value;
         }
 

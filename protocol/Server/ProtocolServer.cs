@@ -1,9 +1,11 @@
 using System.Text.Json;
-using AcPhys.Core;
+using AcPhys.Protocol.Child;
+using AcPhys.Protocol.Messages;
 using AcPhys.Spec.Adapters;
 using AcPhys.Spec.Scenes;
+using AcPhys.Spec.Values;
 
-namespace AcPhys.Spec.Protocol;
+namespace AcPhys.Protocol.Server;
 
 /// <summary>
 /// Serves an <see cref="ICellPhysics"/> over protocol v1 (docs/protocol.md): one request per line in, one answer per
@@ -146,147 +148,74 @@ public sealed class ProtocolServer(ICellPhysics impl)
         }
     }
 
-    private static string Error(string message) => Wire.Line(w => w.WriteString("error", message));
+    private static string Error(string message) => Answers.Error.Line(message);
 
-    private static string Ok(bool ok, Lcoord lcoord) => Wire.Line(w =>
-    {
-        w.WriteBoolean("ok", ok);
-        w.WriteNumber("x", lcoord.X);
-        w.WriteNumber("y", lcoord.Y);
-    });
-
+    // Dispatch from the tables: the queries without a scene are rows of MessageTable; the requests about scenes and
+    // the handshake are this server's, since it holds the scenes.
     private string Dispatch(JsonElement request)
     {
         string op = Wire.ReadString(request, "op");
-        if (op == "hello")
-        {
-            return Hello(request);
-        }
-
         switch (op)
         {
+            case "hello":
+                return Hello(request);
             case "load_scene":
                 return WireProfile.Time("child: load_scene", () => LoadScene(request));
             case "unload_scene":
-                {
-                    string id = Wire.ReadString(request, "scene_id");
-                    lock (loadedScenes)
-                    {
-                        return loadedScenes.Remove(id) ? Wire.Line(w => w.WriteBoolean("ok", true)) : Error($"unknown scene_id \"{Wire.Brief(id, 40)}\"");
-                    }
-                }
+                return UnloadScene(request);
+            case "find_cell_walk":
+                return InWorldFrame
+                    ? Error("find_cell_walk is not offered in the world frame (walks are asked query by query)")
+                    : WireProfile.Time("child: find_cell_walk", () => FindCellWalk(request));
+            case "find_cell" or "find_cell_scene": // find_cell_scene is announced, never sent: a scene travels in find_cell (docs/protocol.md, "Scenes")
+                return FindCell(request);
         }
 
-        if (op == "find_cell_walk" && InWorldFrame)
+        if (MessageTable.ByName.TryGetValue(op, out var message))
         {
-            return Error("find_cell_walk is not offered in the world frame (walks are asked query by query)");
+            return (impl.Ops & message.Op) == 0 ? Error($"op \"{op}\" not offered by {impl.Name}") : message.Serve(impl, request);
         }
 
-        if (op == "find_cell_walk")
+        // An op or capability name that is not a query this server answers: refused as not offered when the
+        // implementation lacks it, else unknown.
+        var known = CapabilityNames.Parse([op], out var capability, out _);
+        return (known != Op.None && (impl.Ops & known) == 0) || capability != Capability.None
+            ? Error($"op \"{op}\" not offered by {impl.Name}")
+            : Error($"unknown op \"{Wire.Brief(op, 64)}\"");
+    }
+
+    private string UnloadScene(JsonElement request)
+    {
+        string id = Wire.ReadString(request, "scene_id");
+        lock (loadedScenes)
         {
-            return WireProfile.Time("child: find_cell_walk", () => FindCellWalk(request));
+            return loadedScenes.Remove(id) ? Answers.Ok.Line(true) : Error($"unknown scene_id \"{Wire.Brief(id, 40)}\"");
         }
+    }
 
-        var known = OpNames.Parse([op], out _);
-        if (known == Op.None)
+    // find_cell: open land (with its origin), a scene's static placement, or a transition (load_cells).
+    private string FindCell(JsonElement request)
+    {
+        if (SceneOf(request, "find_cell", out var scene) is string refused)
         {
-            return Error($"unknown op \"{Wire.Brief(op, 64)}\"");
+            return refused;
         }
 
-        // find_cell_scene is announced, never sent: a scene travels in find_cell (docs/protocol.md, "Scenes").
-        if (known == Op.FindCellScene)
+        bool loadCells = request.TryGetProperty("load_cells", out _) && Wire.ReadBool(request, "load_cells");
+        if (loadCells && (impl.Ops & Op.FindCellTransition) == 0)
         {
-            known = Op.FindCell;
+            return Error($"transition queries (load_cells) not served by {impl.Name} (it does not offer find_cell_transition)");
         }
 
-        if (known != Op.FindCell && (impl.Ops & known) == 0)
+        if (StaticRefused(scene, loadCells) is string noStatic)
         {
-            return Error($"op \"{op}\" not offered by {impl.Name}");
+            return noStatic;
         }
 
-        switch (known)
-        {
-            case Op.BlockIdToLcoord:
-                {
-                    bool ok = impl.BlockIdToLcoord(Wire.ReadCell(request, "cell"), out var lc);
-                    return Ok(ok, lc);
-                }
-
-            case Op.GidToLcoord:
-                {
-                    bool ok = impl.GidToLcoord(Wire.ReadCell(request, "cell"), out var lc);
-                    return Ok(ok, lc);
-                }
-
-            case Op.LcoordToGid:
-                {
-                    var id = impl.LcoordToGid(Wire.ReadInt(request, "x"), Wire.ReadInt(request, "y"));
-                    return Wire.Line(w => Wire.WriteCell(w, "cell", id));
-                }
-
-            case Op.InboundValidCellId:
-                {
-                    bool ok = impl.InboundValidCellId(Wire.ReadCell(request, "cell"));
-                    return Wire.Line(w => w.WriteBoolean("ok", ok));
-                }
-
-            case Op.GetOutsideLcoord:
-                {
-                    bool ok = impl.GetOutsideLcoord(Wire.ReadCell(request, "cell"), Wire.ReadFloat(request, "x"), Wire.ReadFloat(request, "y"), out var lc);
-                    return Ok(ok, lc);
-                }
-
-            case Op.AdjustToOutside:
-                {
-                    var r = impl.AdjustToOutside(Wire.ReadCell(request, "cell"), Wire.ReadFloat(request, "x"), Wire.ReadFloat(request, "y"));
-                    return Wire.Line(w =>
-                    {
-                        w.WriteBoolean("ok", r.Ok);
-                        Wire.WriteCell(w, "cell", r.Cell);
-                        Wire.WriteFloat(w, "x", r.X);
-                        Wire.WriteFloat(w, "y", r.Y);
-                    });
-                }
-
-            case Op.OutsideCells:
-                {
-                    var cells = impl.OutsideCells(Wire.ReadCell(request, "cell"), Wire.ReadOrigin(request), Wire.ReadSpheres(request, "spheres"));
-                    return Wire.Line(w => Wire.WriteCells(w, "cells", cells));
-                }
-
-            case Op.FindCell:
-                {
-                    if (SceneOf(request, "find_cell", out var scene) is string refused)
-                    {
-                        return refused;
-                    }
-
-                    bool loadCells = request.TryGetProperty("load_cells", out _) && Wire.ReadBool(request, "load_cells");
-                    if (loadCells && (impl.Ops & Op.FindCellTransition) == 0)
-                    {
-                        return Error($"transition queries (load_cells) not served by {impl.Name} (it does not offer find_cell_transition)");
-                    }
-
-                    if (StaticRefused(scene, loadCells) is string noStatic)
-                    {
-                        return noStatic;
-                    }
-
-                    var r = scene is null && !loadCells
-                        ? impl.FindCell(Wire.ReadCell(request, "cell"), Wire.ReadOrigin(request), Wire.ReadSpheres(request, "spheres"), Wire.ReadOptionalCell(request, "current"))
-                        : impl.FindCell(scene, Wire.ReadCell(request, "cell"), Wire.ReadSpheres(request, "spheres"), Wire.ReadOptionalCell(request, "current"), loadCells);
-                    return Wire.Line(w => Wire.WriteFindCell(w, r));
-                }
-
-            case Op.OutsideCellsParts:
-                {
-                    var cells = impl.OutsideCellsParts(PartWire.ReadParts(request, "parts"));
-                    return Wire.Line(w => Wire.WriteCells(w, "cells", cells));
-                }
-
-            default:
-                return Error($"unknown op \"{Wire.Brief(op, 64)}\"");
-        }
+        var r = scene is null && !loadCells
+            ? impl.FindCell(Wire.ReadCell(request, "cell"), Wire.ReadOrigin(request), Wire.ReadSpheres(request, "spheres"), Wire.ReadOptionalCell(request, "current"))
+            : impl.FindCell(scene, Wire.ReadCell(request, "cell"), Wire.ReadSpheres(request, "spheres"), Wire.ReadOptionalCell(request, "current"), loadCells);
+        return Answers.FindCell.Line(r);
     }
 
     // find_cell_walk: the walk threaded here by the rule the tool's runners use (WalkThread), one answer per query.
@@ -309,7 +238,7 @@ public sealed class ProtocolServer(ICellPhysics impl)
         }
 
         var answers = impl.FindCellWalk(walk);
-        return Wire.Line(w => WalkWire.WriteAnswer(w, answers));
+        return Answers.Walk(answers.Count).Line(answers);
     }
 
     // A scene query asked as static placement of an implementation that offers only the transition kind (issue #29).
@@ -381,7 +310,7 @@ public sealed class ProtocolServer(ICellPhysics impl)
                 WireProfile.Time("child: SceneBuild.Build (eager when profiled)", () => SceneBuild.Build(scene));
             }
 
-            return Wire.Line(w => w.WriteString("scene_id", id));
+            return Answers.SceneId.Line(id);
         }
     }
 
@@ -425,16 +354,16 @@ public sealed class ProtocolServer(ICellPhysics impl)
             w.WriteNumber("protocol", Wire.Version);
             w.WriteString("name", impl.Name);
             w.WriteStartArray("ops");
-            var ops = impl.Ops & ~(Op.LoadScene | Op.DatRecords | Op.FindCellWalk | Op.Pipeline);
-            ops |= Pipeline ? Op.Pipeline : Op.None; // answers depend on the request alone; scene ids may be the client's
-            ops |= Walks && !InWorldFrame && (ops & (Op.FindCell | SceneQueryKinds.Either)) != 0 ? Op.FindCellWalk : Op.None; // threaded here (WalkThread)
+            var ops = impl.Ops;
+            var capabilities = Pipeline ? Capability.Pipeline : Capability.None; // answers depend on the request alone; scene ids may be the client's
+            capabilities |= Walks && !InWorldFrame && (ops & (Op.FindCell | SceneQueryKinds.Either)) != 0 ? Capability.FindCellWalk : Capability.None; // threaded here (WalkThread)
             if (LoadScenes && SceneQueryKinds.OffersScenes(ops))
             {
-                ops |= Op.LoadScene; // the server holds the scenes; the implementation behind it needs nothing for it
-                ops |= DatRecords ? Op.DatRecords : Op.None; // and reads them from records with the project's reader
+                capabilities |= Capability.LoadScene; // the server holds the scenes; the implementation behind it needs nothing for it
+                capabilities |= DatRecords ? Capability.DatRecords : Capability.None; // and reads them from records with the project's reader
             }
 
-            foreach (var name in OpNames.Names(ops))
+            foreach (var name in OpNames.Names(ops).Concat(CapabilityNames.Names(capabilities)))
             {
                 w.WriteStringValue(name);
             }

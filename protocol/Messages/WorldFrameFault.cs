@@ -1,4 +1,4 @@
-namespace AcPhys.Spec.Protocol;
+namespace AcPhys.Protocol.Messages;
 
 /// <summary>A planted bug of a world-frame shim (<c>acphys serve --world-frame --world-frame-fault</c>): the suite must fail it.</summary>
 public enum WorldFrameFault

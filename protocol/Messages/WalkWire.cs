@@ -1,14 +1,15 @@
 using System.Globalization;
 using System.Numerics;
 using System.Text.Json;
+using AcPhys.Protocol.Client;
 using AcPhys.Spec.Adapters;
 
-namespace AcPhys.Spec.Protocol;
+namespace AcPhys.Protocol.Messages;
 
 /// <summary>
 /// <c>find_cell_walk</c> on the wire (docs/protocol.md, "Whole walks"): the request's walk fields and the answer's
 /// <c>steps</c>, one write/read pair shared by the client (<see cref="ProcessAdapter"/>) and the server
-/// (<see cref="ProtocolServer"/>).
+/// (<see cref="Server.ProtocolServer"/>).
 /// </summary>
 public static class WalkWire
 {
@@ -53,7 +54,7 @@ public static class WalkWire
     /// <param name="scene">The scene the request names, already resolved (null for open land).</param>
     /// <returns>The walk.</returns>
     /// <exception cref="WireException">A field is missing or malformed.</exception>
-    public static WalkRequest ReadFields(JsonElement request, Scenes.Scene? scene)
+    public static WalkRequest ReadFields(JsonElement request, AcPhys.Spec.Scenes.Scene? scene)
     {
         var cell = Wire.ReadCell(request, "cell");
         var origin = Wire.ReadVector(request, "origin");

@@ -1,6 +1,7 @@
 using System.Globalization;
+using AcPhys.Protocol.Child;
 
-namespace AcPhys.Spec.Protocol;
+namespace AcPhys.Protocol.Messages;
 
 /// <summary>
 /// The per-line size limit of protocol v1 in this tool: <see cref="BoundedLineReader.DefaultMaxBytes"/> (1 MiB), or
@@ -28,7 +29,7 @@ public static class LineLimit
             return bytes;
         }
 
-        problem = $"{Variable}='{Values.InputQuote.Brief(text)}': expected a number of bytes, 1 to 1073741824";
+        problem = $"{Variable}='{AcPhys.Spec.Values.InputQuote.Brief(text)}': expected a number of bytes, 1 to 1073741824";
         return BoundedLineReader.DefaultMaxBytes;
     }
 }

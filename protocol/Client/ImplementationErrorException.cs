@@ -1,4 +1,4 @@
-namespace AcPhys.Spec.Protocol;
+namespace AcPhys.Protocol.Client;
 
 /// <summary>
 /// An implementation answered <c>{"error": ...}</c> to an operation it announced. The operations are total, so this is

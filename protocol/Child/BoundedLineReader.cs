@@ -1,7 +1,7 @@
 using System.Diagnostics;
 using System.Text;
 
-namespace AcPhys.Spec.Protocol;
+namespace AcPhys.Protocol.Child;
 
 /// <summary>
 /// Reads UTF-8 lines from a protocol peer (requests in <c>serve</c>, answers of an implementation) holding at most

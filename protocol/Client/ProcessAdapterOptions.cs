@@ -1,4 +1,6 @@
-namespace AcPhys.Spec.Protocol;
+using AcPhys.Protocol.Child;
+using AcPhys.Protocol.Messages;
+namespace AcPhys.Protocol.Client;
 
 /// <summary>How a <see cref="ProcessAdapter"/> runs its child.</summary>
 public sealed record ProcessAdapterOptions

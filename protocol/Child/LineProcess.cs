@@ -3,9 +3,10 @@ using System.Diagnostics;
 using System.Globalization;
 using System.Runtime.InteropServices;
 using System.Text;
+using AcPhys.Protocol.Messages;
 using AcPhys.Spec.Adapters;
 
-namespace AcPhys.Spec.Protocol;
+namespace AcPhys.Protocol.Child;
 
 /// <summary>
 /// A child process spoken to one line at a time over stdin/stdout, with a per-exchange timeout. Its stderr is the
@@ -501,7 +502,7 @@ internal sealed class LineProcess : IDisposable
             return;
         }
 
-        line = Values.InputQuote.Line(line, MaxStderrChars); // the child's text: no raw control characters, no endless line (issue 28)
+        line = AcPhys.Spec.Values.InputQuote.Line(line, MaxStderrChars); // the child's text: no raw control characters, no endless line (issue 28)
         tail.Enqueue(line);
         while (tail.Count > TailLines && tail.TryDequeue(out _))
         {

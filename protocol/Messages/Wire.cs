@@ -5,7 +5,7 @@ using System.Text.Json;
 using AcPhys.Core;
 using AcPhys.Core.Text;
 
-namespace AcPhys.Spec.Protocol;
+namespace AcPhys.Protocol.Messages;
 
 /// <summary>
 /// The value encoding of protocol v1 (docs/protocol.md): one JSON object per line; cell ids as <c>"0xAABBCCCC"</c>;
@@ -63,7 +63,7 @@ public static class Wire
     /// one by one, so every refusal keeps its order and words.
     /// </remarks>
     public static JsonDocument Parse(string line) =>
-        (Corpus.JsonStrings.MayHoldSurrogateEscape(line.AsSpan()) ? null : OnePass(() => JsonDocument.Parse(line, StrictOptions)))
+        (AcPhys.Spec.Corpus.JsonStrings.MayHoldSurrogateEscape(line.AsSpan()) ? null : OnePass(() => JsonDocument.Parse(line, StrictOptions)))
         ?? ParseChecked(line);
 
     /// <summary>Parses one message line given as valid UTF-8, exactly as <see cref="Parse(string)"/> parses its text.</summary>
@@ -71,7 +71,7 @@ public static class Wire
     /// <returns>The parsed document (dispose it).</returns>
     /// <exception cref="WireException">As <see cref="Parse(string)"/>.</exception>
     public static JsonDocument Parse(ReadOnlyMemory<byte> line) =>
-        (Corpus.JsonStrings.MayHoldSurrogateEscape(line.Span) ? null : OnePass(() => JsonDocument.Parse(line, StrictOptions)))
+        (AcPhys.Spec.Corpus.JsonStrings.MayHoldSurrogateEscape(line.Span) ? null : OnePass(() => JsonDocument.Parse(line, StrictOptions)))
         ?? ParseChecked(Encoding.UTF8.GetString(line.Span));
 
     // The one pass: the strict parse, an object, readable text; null sends the line to ParseChecked for the words.
@@ -87,7 +87,7 @@ public static class Wire
             return null; // not JSON, or a duplicate key: worded by ParseChecked
         }
 
-        if (doc.RootElement.ValueKind == JsonValueKind.Object && Corpus.JsonStrings.FirstUnreadable(doc.RootElement, "$") is null)
+        if (doc.RootElement.ValueKind == JsonValueKind.Object && AcPhys.Spec.Corpus.JsonStrings.FirstUnreadable(doc.RootElement, "$") is null)
         {
             return doc;
         }
@@ -119,7 +119,7 @@ public static class Wire
             throw new WireException($"expected a JSON object, got {kind}");
         }
 
-        if (Corpus.JsonStrings.FirstUnreadable(doc.RootElement, "$") is { } bad)
+        if (AcPhys.Spec.Corpus.JsonStrings.FirstUnreadable(doc.RootElement, "$") is { } bad)
         {
             doc.Dispose();
             throw new WireException($"{bad}: not valid text (a lone UTF-16 surrogate escape)");
@@ -211,7 +211,7 @@ public static class Wire
     /// </summary>
     /// <param name="w">The writer.</param>
     /// <param name="r">The answer.</param>
-    public static void WriteFindCell(Utf8JsonWriter w, Adapters.FindCellResult r)
+    public static void WriteFindCell(Utf8JsonWriter w, AcPhys.Spec.Adapters.FindCellResult r)
     {
         WriteCells(w, "cells", r.Cells);
         if (r.Containing.IsNone)
@@ -244,7 +244,7 @@ public static class Wire
     /// <param name="a">The answer object.</param>
     /// <returns>The answer.</returns>
     /// <exception cref="WireException">A field is malformed, or <c>loaded</c> is not parallel to <c>cells</c>.</exception>
-    public static Adapters.FindCellResult ReadFindCell(JsonElement a)
+    public static AcPhys.Spec.Adapters.FindCellResult ReadFindCell(JsonElement a)
     {
         var cells = ReadCells(a, "cells");
         bool[]? loaded = null;
@@ -263,7 +263,7 @@ public static class Wire
         }
 
         bool? hits = a.TryGetProperty("hits_interior_cell", out var h) && h.ValueKind != JsonValueKind.Null ? ReadBool(a, "hits_interior_cell") : null;
-        return new Adapters.FindCellResult(cells, ReadOptionalCell(a, "containing")) { Loaded = loaded, HitsInteriorCell = hits };
+        return new AcPhys.Spec.Adapters.FindCellResult(cells, ReadOptionalCell(a, "containing")) { Loaded = loaded, HitsInteriorCell = hits };
     }
 
     /// <summary>
@@ -417,7 +417,7 @@ public static class Wire
         return v.ValueKind == JsonValueKind.String ? v.GetString()! : throw new WireException($"field \"{name}\" must be a string, got {Show(v)}");
     }
 
-    /// <summary>Reads spheres <c>[{x,y,z,r}]</c> by the shared rules (<see cref="Values.SphereList"/>: empty allowed, at most 10,000; <see cref="Values.SphereRadius"/>), as corpus files read a walk's body.</summary>
+    /// <summary>Reads spheres <c>[{x,y,z,r}]</c> by the shared rules (<see cref="AcPhys.Spec.Values.SphereList"/>: empty allowed, at most 10,000; <see cref="AcPhys.Spec.Values.SphereRadius"/>), as corpus files read a walk's body.</summary>
     /// <param name="obj">The object.</param>
     /// <param name="name">The property name.</param>
     /// <returns>The spheres.</returns>
@@ -429,7 +429,7 @@ public static class Wire
             throw new WireException($"field \"{name}\" must be an array of {{x,y,z,r}}");
         }
 
-        Refuse(Values.SphereList.Problem(array.GetArrayLength(), min: 0), name);
+        Refuse(AcPhys.Spec.Values.SphereList.Problem(array.GetArrayLength(), min: 0), name);
         var spheres = new Sphere[array.GetArrayLength()];
         int i = 0;
         foreach (var s in array.EnumerateArray())
@@ -441,7 +441,7 @@ public static class Wire
             }
 
             float r = FloatAt(s, "r", name, i);
-            if (Values.SphereRadius.Problem(r) is { } bad)
+            if (AcPhys.Spec.Values.SphereRadius.Problem(r) is { } bad)
             {
                 Refuse(bad, $"{name}[{i}].r");
             }
@@ -453,14 +453,14 @@ public static class Wire
         return spheres;
     }
 
-    /// <summary>Reads a sphere radius field by the shared rule (<see cref="Values.SphereRadius"/>: finite, ≥ 0).</summary>
+    /// <summary>Reads a sphere radius field by the shared rule (<see cref="AcPhys.Spec.Values.SphereRadius"/>: finite, ≥ 0).</summary>
     /// <param name="obj">The object.</param>
     /// <param name="name">The property name.</param>
     /// <returns>The radius.</returns>
     public static float ReadRadius(JsonElement obj, string name)
     {
         float r = ReadFloat(obj, name);
-        Refuse(Values.SphereRadius.Problem(r), name);
+        Refuse(AcPhys.Spec.Values.SphereRadius.Problem(r), name);
         return r;
     }
 
@@ -476,8 +476,8 @@ public static class Wire
 
     /// <summary>Shows a JSON value briefly, for messages.</summary>
     /// <param name="v">The value.</param>
-    /// <returns>At most 80 characters of its text (<see cref="Values.InputQuote"/>).</returns>
-    public static string Show(JsonElement v) => Values.InputQuote.Json(v);
+    /// <returns>At most 80 characters of its text (<see cref="AcPhys.Spec.Values.InputQuote"/>).</returns>
+    public static string Show(JsonElement v) => AcPhys.Spec.Values.InputQuote.Json(v);
 
     /// <summary>Cuts a text to a length, for messages.</summary>
     /// <param name="text">The text.</param>
@@ -485,7 +485,7 @@ public static class Wire
     /// <returns>The text, cut with an ellipsis when longer.</returns>
     public static string Brief(string text, int max)
     {
-        text = Values.InputQuote.Escape(text); // the peer's text never reaches a console or report raw (issue 28)
+        text = AcPhys.Spec.Values.InputQuote.Escape(text); // the peer's text never reaches a console or report raw (issue 28)
         return text.Length <= max ? text : text[..max] + "...";
     }
 
@@ -502,7 +502,7 @@ public static class Wire
     internal static bool TryReadFloat(JsonElement obj, string name, out float value)
     {
         value = 0;
-        return obj.TryGetProperty(name, out var v) && Values.Float32Json.TryRead(v, nonFiniteNames: true, out value, out _);
+        return obj.TryGetProperty(name, out var v) && AcPhys.Spec.Values.Float32Json.TryRead(v, nonFiniteNames: true, out value, out _);
     }
 
     // A float field of list[index]: read at once when it is there and well-formed; otherwise read again as before, for the message.
@@ -526,7 +526,7 @@ public static class Wire
     }
 
     private static float FloatValue(JsonElement v, string name) =>
-        Values.Float32Json.TryRead(v, nonFiniteNames: true, out float f, out string? problem) ? f : throw new WireException($"field \"{name}\": {problem}");
+        AcPhys.Spec.Values.Float32Json.TryRead(v, nonFiniteNames: true, out float f, out string? problem) ? f : throw new WireException($"field \"{name}\": {problem}");
 
     private static void Refuse(string? problem, string name)
     {

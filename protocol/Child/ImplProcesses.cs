@@ -1,6 +1,6 @@
 using System.Runtime.InteropServices;
 
-namespace AcPhys.Spec.Protocol;
+namespace AcPhys.Protocol.Child;
 
 /// <summary>
 /// The processes of one <c>--impl-cmd</c> run on Linux, found by a tag in their environment: every process the

@@ -1,4 +1,4 @@
-namespace AcPhys.Spec.Protocol;
+namespace AcPhys.Protocol.Messages;
 
 /// <summary>A protocol message that is not valid protocol v1: not JSON, not an object, a missing or mistyped field.</summary>
 public sealed class WireException : Exception

@@ -1,8 +1,9 @@
 using System.Text.Json;
 using AcPhys.Spec.Dat;
 using AcPhys.Spec.Scenes;
+using AcPhys.Spec.Values;
 
-namespace AcPhys.Spec.Protocol;
+namespace AcPhys.Protocol.Messages;
 
 /// <summary>
 /// A scene on the wire as retail dat records (docs/protocol.md, "Scenes as dat records"): an object with the record

@@ -3,7 +3,7 @@ using AcPhys.Core;
 using AcPhys.Core.Text;
 using AcPhys.Spec.Adapters;
 
-namespace AcPhys.Spec.Protocol;
+namespace AcPhys.Protocol.Messages;
 
 /// <summary>
 /// The world-frame mode of protocol v1 (docs/protocol.md, "World frame"; issue #29): for a port that keeps one world

@@ -1,6 +1,6 @@
 using System.Text;
 
-namespace AcPhys.Spec.Protocol;
+namespace AcPhys.Protocol.Child;
 
 /// <summary>
 /// One answer line as the child wrote it (its UTF-8 bytes, no line end), spelt as text only when something needs the

@@ -1,6 +1,7 @@
 using System.Globalization;
+using AcPhys.Protocol.Messages;
 
-namespace AcPhys.Spec.Protocol;
+namespace AcPhys.Protocol.Child;
 
 /// <summary>A protocol peer sent a line longer than the limit (<see cref="BoundedLineReader"/>); the message names the limit, never the line.</summary>
 public sealed class LineTooLongException : Exception
