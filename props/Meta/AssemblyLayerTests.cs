@@ -4,8 +4,9 @@ using AcPhys.Props.Support;
 namespace AcPhys.Props.Meta;
 
 /// <summary>
-/// The assemblies by job, dependencies one way (docs/architecture.md): core ← contract ← formats ← checking, the
-/// numerics studies above the engine and referenced by none of it. Pinned twice: what each compiled assembly
+/// The assemblies by job, dependencies one way (docs/architecture.md): core ← contract ← formats ← protocol, and
+/// formats ← checking beside it (the engine never references the protocol: issue 42), the numerics studies above the
+/// engine and referenced by none of it. Pinned twice: what each compiled assembly
 /// references, and what its project file declares (a package reference a NuGet consumer would inherit even unused).
 /// </summary>
 public sealed class AssemblyLayerTests
@@ -16,6 +17,7 @@ public sealed class AssemblyLayerTests
         ("AcPhys.Core", "core/AcPhys.Core.csproj", []),
         ("AcPhys.Contract", "contract/AcPhys.Contract.csproj", []),
         ("AcPhys.Formats", "formats/AcPhys.Formats.csproj", []),
+        ("AcPhys.Protocol", "protocol/AcPhys.Protocol.csproj", []),
         ("AcPhys.Spec", "spec/AcPhys.Spec.csproj", ["FsCheck", "FSharp.Core"]),
         ("AcPhys.Studies", "studies/AcPhys.Studies.csproj", ["FsCheck", "FSharp.Core"]),
     ];
@@ -59,6 +61,30 @@ public sealed class AssemblyLayerTests
             .Where(l => System.Reflection.Assembly.Load(l.Assembly).GetReferencedAssemblies().Any(a => a.Name == "AcPhys.Studies"))
             .Select(l => l.Assembly).ToArray();
         Assert.True(users.Length == 0, "AcPhys.Studies is referenced by " + string.Join(", ", users));
+    }
+
+    [Theory(DisplayName = "LAYERS-PROTOCOL: the checking engine does not reference AcPhys.Protocol, compiled or declared: it asks contract's ITransport, never a transport class")]
+    [InlineData("AcPhys.Spec", "spec/AcPhys.Spec.csproj")]
+    [InlineData("AcPhys.Studies", "studies/AcPhys.Studies.csproj")]
+    public void Engine_DoesNotReferenceProtocol(string name, string projectFile)
+    {
+        var refs = System.Reflection.Assembly.Load(name).GetReferencedAssemblies().Select(a => a.Name!).ToArray();
+        Assert.DoesNotContain("AcPhys.Protocol", refs);
+        var project = XDocument.Load(Path.Combine(RepoPaths.Root, projectFile));
+        var projectRefs = project.Descendants("ProjectReference").Select(e => Path.GetFileNameWithoutExtension((string)e.Attribute("Include")!)).ToArray();
+        Assert.DoesNotContain("AcPhys.Protocol", projectRefs);
+    }
+
+    [Fact(DisplayName = "LAYERS-PROTOCOL: AcPhys.Formats holds no process runtime (no P/Invoke: setsid, kill, poll, fcntl are AcPhys.Protocol's) and no protocol namespace")]
+    public void Formats_HoldsNoProcessRuntime()
+    {
+        const System.Reflection.BindingFlags All = System.Reflection.BindingFlags.Public | System.Reflection.BindingFlags.NonPublic | System.Reflection.BindingFlags.Static | System.Reflection.BindingFlags.Instance | System.Reflection.BindingFlags.DeclaredOnly;
+        var formats = System.Reflection.Assembly.Load("AcPhys.Formats");
+        var native = formats.GetTypes().SelectMany(t => t.GetMethods(All)).Where(m => m.Attributes.HasFlag(System.Reflection.MethodAttributes.PinvokeImpl)).Select(m => m.DeclaringType!.Name + "." + m.Name);
+        Assert.Empty(native);
+        Assert.Empty(formats.GetTypes().Where(t => t.Namespace?.EndsWith(".Protocol", StringComparison.Ordinal) == true).Select(t => t.FullName));
+        var protocol = System.Reflection.Assembly.Load("AcPhys.Protocol");
+        Assert.NotEmpty(protocol.GetTypes().SelectMany(t => t.GetMethods(All)).Where(m => m.Attributes.HasFlag(System.Reflection.MethodAttributes.PinvokeImpl))); // the check can fail: the runtime is there
     }
 
     private static (HashSet<string> Layers, HashSet<string> Packages) Allowed(string name)
