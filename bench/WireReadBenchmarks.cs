@@ -1,5 +1,5 @@
 using System.Reflection;
-using AcPhys.Spec.Protocol;
+using AcPhys.Protocol.Messages;
 using AcPhys.Spec.Scenes;
 using BenchmarkDotNet.Attributes;
 

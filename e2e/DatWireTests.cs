@@ -1,10 +1,11 @@
 using System.Text.Json;
 using System.Text.Json.Nodes;
 using AcPhys.E2E.Support;
+using AcPhys.Protocol.Messages;
+using AcPhys.Protocol.Server;
 using AcPhys.Spec.Adapters;
 using AcPhys.Spec.Cases;
 using AcPhys.Spec.Corpus;
-using AcPhys.Spec.Protocol;
 using AcPhys.Spec.Scenes;
 
 namespace AcPhys.E2E;

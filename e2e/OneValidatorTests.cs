@@ -1,6 +1,6 @@
+using AcPhys.Protocol.Server;
 using AcPhys.Spec.Adapters;
 using AcPhys.Spec.Corpus;
-using AcPhys.Spec.Protocol;
 using AcPhys.Spec.Scenes;
 
 namespace AcPhys.E2E;

@@ -1,7 +1,9 @@
 using System.Text.RegularExpressions;
 using AcPhys.E2E.Support;
+using AcPhys.Protocol.Client;
+using AcPhys.Protocol.Messages;
+using AcPhys.Protocol.Server;
 using AcPhys.Spec.Adapters;
-using AcPhys.Spec.Protocol;
 
 namespace AcPhys.E2E;
 
@@ -77,9 +79,9 @@ public sealed partial class PipelineTests
     public void ServeTakesTheClientsSceneId()
     {
         using var piped = ProcessAdapter.Start(Acphys.ServeCommand, new ProcessAdapterOptions { Timeout = TimeSpan.FromSeconds(60) });
-        Assert.NotEqual(Op.None, piped.Ops & Op.Pipeline);
+        Assert.NotEqual(Capability.None, piped.Capabilities & Capability.Pipeline);
         using var older = ProcessAdapter.Start(Acphys.ServeCommand + " --no-pipeline", new ProcessAdapterOptions { Timeout = TimeSpan.FromSeconds(60) });
-        Assert.Equal(Op.None, older.Ops & Op.Pipeline);
+        Assert.Equal(Capability.None, older.Capabilities & Capability.Pipeline);
         var server = new ProtocolServer(ReferenceAdapter.Instance);
         const string Scene = """{"blocks":["0xA9B4"],"cells":[]}""";
         Assert.Equal("""{"scene_id":"mine-1"}""", server.Answer("""{"op":"load_scene","scene_id":"mine-1","scene":""" + Scene + "}"));

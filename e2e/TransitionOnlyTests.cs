@@ -2,9 +2,10 @@ using System.Numerics;
 using System.Text.Json;
 using AcPhys.Core;
 using AcPhys.E2E.Support;
+using AcPhys.Protocol.Messages;
+using AcPhys.Protocol.Server;
 using AcPhys.Spec.Adapters;
 using AcPhys.Spec.Invariants;
-using AcPhys.Spec.Protocol;
 using AcPhys.Spec.Scenes;
 
 namespace AcPhys.E2E;
@@ -69,7 +70,7 @@ public sealed class TransitionOnlyTests
     {
         var plan = new CottagePlan((0xA9 * 192.0) + 50, (0xB4 * 192.0) + 50, 0.3f, 2, 6f, 6f, 0, true, false);
         var scene = SceneKit.Cottage(plan);
-        var server = new ProtocolServer(new OpsOffered(ReferenceAdapter.Instance, TransitionOnly | Op.LoadScene | Op.DatRecords | Op.FindCellWalk)) { DatRecords = false };
+        var server = new ProtocolServer(new OpsOffered(ReferenceAdapter.Instance, TransitionOnly)) { DatRecords = false };
         using var hello = JsonDocument.Parse(server.Answer("{\"op\":\"hello\",\"protocol\":1}"));
         var ops = hello.RootElement.GetProperty("ops").EnumerateArray().Select(e => e.GetString()).ToList();
         Assert.Contains("load_scene", ops);

@@ -1,10 +1,11 @@
 using System.Numerics;
 using AcPhys.Core;
 using AcPhys.E2E.Support;
+using AcPhys.Protocol.Client;
+using AcPhys.Protocol.Messages;
 using AcPhys.Spec.Adapters;
 using AcPhys.Spec.Cases;
 using AcPhys.Spec.Corpus;
-using AcPhys.Spec.Protocol;
 
 namespace AcPhys.E2E;
 
@@ -49,8 +50,8 @@ public sealed class WalkWireTests
     {
         using var whole = ProcessAdapter.Start(Acphys.ServeCommand, new ProcessAdapterOptions { Timeout = TimeSpan.FromSeconds(60) });
         using var single = ProcessAdapter.Start(Acphys.ServeCommand + " --no-walks", new ProcessAdapterOptions { Timeout = TimeSpan.FromSeconds(60) });
-        Assert.NotEqual(Op.None, whole.Ops & Op.FindCellWalk);
-        Assert.Equal(Op.None, single.Ops & Op.FindCellWalk);
+        Assert.NotEqual(Capability.None, whole.Capabilities & Capability.FindCellWalk);
+        Assert.Equal(Capability.None, single.Capabilities & Capability.FindCellWalk);
         int queries = 0;
         foreach (var (name, walk) in Walks())
         {
@@ -136,7 +137,7 @@ public sealed class WalkWireTests
     }
 
     private static WalkRequest DatScene(WalkRequest walk, ProcessAdapter served) =>
-        walk.Scene is null || (served.Ops & Op.DatRecords) == 0 ? walk : walk with { Scene = AcPhys.Spec.Dat.DatRoundTrip.Of(walk.Scene) };
+        walk.Scene is null || (served.Capabilities & Capability.DatRecords) == 0 ? walk : walk with { Scene = AcPhys.Spec.Dat.DatRoundTrip.Of(walk.Scene) };
 
     private static bool Same(FindCellResult a, FindCellResult b) =>
         a.Cells.SequenceEqual(b.Cells) && a.Containing == b.Containing && a.HitsInteriorCell == b.HitsInteriorCell

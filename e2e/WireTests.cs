@@ -1,8 +1,9 @@
 using System.Numerics;
 using System.Text.Json;
 using AcPhys.Core;
+using AcPhys.Protocol.Messages;
+using AcPhys.Protocol.Server;
 using AcPhys.Spec.Adapters;
-using AcPhys.Spec.Protocol;
 using AcPhys.Spec.Scenes;
 
 namespace AcPhys.E2E;

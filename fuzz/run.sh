@@ -4,7 +4,7 @@
 #   fuzz/run.sh [--minutes N] [--jobs J] [--target T] [--fault F] [--timeout-ms MS] [--seeds DIR]
 #               [--name NAME] [--fail-on-crash]
 #
-# Builds the harness (Release) into .fuzz/runs/NAME/build, instruments AcPhys.Core.dll, AcPhys.Contract.dll, AcPhys.Formats.dll, AcPhys.Spec.dll and the
+# Builds the harness (Release) into .fuzz/runs/NAME/build, instruments AcPhys.Core.dll, AcPhys.Contract.dll, AcPhys.Formats.dll, AcPhys.Protocol.dll, AcPhys.Spec.dll and the
 # toy target in place, runs afl-fuzz for N minutes (J=1: one -M main; J>1: one -M main and J-1 -S secondaries on
 # one sync dir), copies crashes and hangs to .fuzz/runs/NAME/findings, replays the crashes and prints a summary.
 # Non-interactive (no TTY needed). Exit 0 when the campaign ran (crashes or not; with --fail-on-crash, 3 when it
@@ -80,7 +80,7 @@ build_and_instrument() {
     dotnet publish "$root/fuzz/AcPhys.Fuzz.Instrumenter/AcPhys.Fuzz.Instrumenter.csproj" -c Release -o "$build/instrument" --nologo \
         >"$logs/publish-instrument.log" 2>&1 || { tail -n 30 "$logs/publish-instrument.log" >&2; die "publish of the instrumenter failed"; }
     local assemblies=()
-    for dll in AcPhys.Core.dll AcPhys.Contract.dll AcPhys.Formats.dll AcPhys.Spec.dll AcPhys.Fuzz.Toy.dll; do
+    for dll in AcPhys.Core.dll AcPhys.Contract.dll AcPhys.Formats.dll AcPhys.Protocol.dll AcPhys.Spec.dll AcPhys.Fuzz.Toy.dll; do
         [[ -f "$build/harness/$dll" ]] && assemblies+=("$build/harness/$dll")
     done
     # One process for all of them: SharpFuzz's block ids come from one fixed-seed generator per process.

@@ -2,10 +2,11 @@
 # pack.sh: NuGet packages of AcPhysVerify into one folder (docs/ci.md):
 #   AcPhys.Core  (the reference core; core/ stays non-packable in its project file, so it is packed with IsPackable=true here)
 #   AcPhys.Contract (the adapter contract a port implements: ICellPhysics, Op, Scene; depends on AcPhys.Core, no FsCheck)
-#   AcPhys.Formats  (case values, corpus and scene JSON, dat records, protocol v1 client/server; depends on AcPhys.Contract)
+#   AcPhys.Formats  (case values, corpus and scene JSON, dat records; depends on AcPhys.Contract)
 #   AcPhys.Spec  (the checking engine: invariants, generators, shrinkers, planted faults, runner; depends on AcPhys.Formats, FsCheck)
 #   AcPhys.Xunit (the gate as a port's xunit tests, GateTests<TAdapter>; depends on AcPhys.Spec, xunit 2, Xunit.SkippableFact)
-#   AcPhys.Cli   (the acphys command as a .NET tool: dotnet tool install AcPhys.Cli)
+#   AcPhys.Cli   (the acphys command as a .NET tool: dotnet tool install AcPhys.Cli; AcPhys.Protocol, protocol v1, travels
+#                 inside it: no packed library depends on it, so it is not a package of its own)
 # Usage: packaging/pack.sh [-o DIR] [-c Release|Debug] [--version X.Y.Z] [--no-build]
 set -euo pipefail
 

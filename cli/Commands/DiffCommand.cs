@@ -4,7 +4,6 @@ using AcPhys.Cli.Diff;
 using AcPhys.Cli.Impl;
 using AcPhys.Spec.Adapters;
 using AcPhys.Spec.Invariants;
-using AcPhys.Spec.Protocol;
 using AcPhys.Spec.Running;
 using Spectre.Console;
 
@@ -81,7 +80,7 @@ internal static class DiffCommand
 
             if (!quiet)
             {
-                Terminal.Line($"diff: {impl.Name} against {reference.Name}; {Fmt.Count(cases)} generated inputs per check, every divergence counted in its class, ops both offer: {string.Join(", ", OpNames.Names(impl.Ops))}");
+                Terminal.Line($"diff: {impl.Name} against {reference.Name}; {Fmt.Count(cases)} generated inputs per check, every divergence counted in its class, ops both offer: {string.Join(", ", OpNames.Names(impl.Ops).Concat(Transports.Negotiated(impl)))}");
             }
 
             var stopwatch = Stopwatch.StartNew();
@@ -91,9 +90,7 @@ internal static class DiffCommand
                 foreach (var check in checks)
                 {
                     var seed = fixedSeed ?? Seed.Derive(Spec.Running.Profile.Pr.BaseSeed!.Value, check.Id);
-                    results.Add(impl is ProcessAdapter { Pipelines: true } piped
-                        ? piped.Pipelined(() => check.Run(impl, cases, seed)) // streamed, repeated where an answer differs (docs/protocol.md, "Pipelining")
-                        : check.Run(impl, cases, seed));
+                    results.Add(Transports.Streamed(impl, () => check.Run(impl, cases, seed))); // streamed, repeated where an answer differs (docs/protocol.md, "Pipelining")
                     advance(check.Id);
                 }
             },

@@ -1,8 +1,9 @@
 using System.CommandLine;
 using System.Text;
+using AcPhys.Protocol.Messages;
+using AcPhys.Protocol.Server;
 using AcPhys.Spec.Adapters;
 using AcPhys.Spec.Faults;
-using AcPhys.Spec.Protocol;
 
 namespace AcPhys.Cli.Commands;
 
@@ -62,7 +63,7 @@ internal static class ServeCommand
         return command;
     }
 
-    // --ops: the operations kept; the transports (load_scene, dat_records, find_cell_walk) are the server's own.
+    // --ops: the operations kept; the capabilities (load_scene, dat_records, find_cell_walk, pipeline) are the server's own.
     private static Op ParseOps(string names)
     {
         var ops = OpNames.Parse(names.Split(',', StringSplitOptions.RemoveEmptyEntries | StringSplitOptions.TrimEntries), out var unknown);
@@ -71,7 +72,7 @@ internal static class ServeCommand
             throw new UsageException($"--ops: unknown or no operation '{(unknown.Count > 0 ? unknown[0] : names)}' (known: {string.Join(", ", OpNames.Names(Op.All))})");
         }
 
-        return ops | Op.LoadScene | Op.DatRecords | Op.FindCellWalk;
+        return ops;
     }
 
     private static int Run(string? faultId, string? pickName, string? fidelityNames, (bool NoLoadScene, bool NoDatRecords, bool NoWalks, bool NoPipeline, bool AnnounceRetail) flags, string? opNames, (bool On, string? Fault) world)

@@ -2,10 +2,10 @@ using System.CommandLine;
 using System.Diagnostics;
 using AcPhys.Cli.Impl;
 using AcPhys.Cli.Verify;
+using AcPhys.Protocol.Client;
 using AcPhys.Spec.Adapters;
 using AcPhys.Spec.Faults;
 using AcPhys.Spec.Invariants;
-using AcPhys.Spec.Protocol;
 using AcPhys.Spec.Running;
 
 namespace AcPhys.Cli.Commands;

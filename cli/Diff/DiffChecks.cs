@@ -152,7 +152,7 @@ internal sealed class DiffChecks(ICellPhysics reference)
     /// <param name="impl">The implementation.</param>
     /// <param name="w">The scene walk.</param>
     /// <returns>The scene.</returns>
-    public static Scene SceneSent(ICellPhysics impl, SceneWalk w) => (impl.Ops & Op.DatRecords) != 0 ? DatRoundTrip.Of(w.Scene) : w.Scene;
+    public static Scene SceneSent(ICellPhysics impl, SceneWalk w) => Transports.ScenesAsRecords(impl) ? DatRoundTrip.Of(w.Scene) : w.Scene;
 
     // Where along the reference's own walk the first divergence falls: what kind of step the reference took there.
     private static string StepKind(IReadOnlyList<WalkStep> theirs, int i)

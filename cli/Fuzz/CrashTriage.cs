@@ -1,6 +1,7 @@
 using System.Security.Cryptography;
 using AcPhys.Cli.Verify;
 using AcPhys.Fuzz.Targets;
+using AcPhys.Protocol.Client;
 using AcPhys.Spec.Corpus;
 using AcPhys.Spec.Judging;
 
@@ -113,7 +114,7 @@ internal sealed class CrashTriage(FuzzSettings s, Subject subject)
             words.AddRange(["--fault", s.Fault]);
         }
 
-        words.AddRange((s.Port with { Timeout = Spec.Protocol.ProcessAdapterOptions.DefaultTimeout }).Words()); // --impl PATH / --impl-cmd COMMAND: the port that fails it (replay waits the default 10 s per answer)
+        words.AddRange((s.Port with { Timeout = ProcessAdapterOptions.DefaultTimeout }).Words()); // --impl PATH / --impl-cmd COMMAND: the port that fails it (replay waits the default 10 s per answer)
 
         return string.Join(' ', words.Select(ReplayLine.Quote));
     }

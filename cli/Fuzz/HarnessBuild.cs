@@ -3,8 +3,8 @@ namespace AcPhys.Cli.Fuzz;
 /// <summary>Publishes the harness and the SharpFuzz instrumenter (Release) and instruments the physics assemblies in place, all in one instrumenter process (docs/fuzzing.md).</summary>
 internal static class HarnessBuild
 {
-    /// <summary>The assemblies that get AFL edge probes: the physics, the invariants and faults, the toy.</summary>
-    public static readonly string[] Instrumented = ["AcPhys.Core.dll", "AcPhys.Contract.dll", "AcPhys.Formats.dll", "AcPhys.Spec.dll", "AcPhys.Fuzz.Toy.dll"];
+    /// <summary>The assemblies that get AFL edge probes: the physics, the formats and protocol v1 (the serve-request target), the invariants and faults, the toy.</summary>
+    public static readonly string[] Instrumented = ["AcPhys.Core.dll", "AcPhys.Contract.dll", "AcPhys.Formats.dll", "AcPhys.Protocol.dll", "AcPhys.Spec.dll", "AcPhys.Fuzz.Toy.dll"];
 
     /// <summary>Builds into <see cref="FuzzSettings.BuildDir"/> unless <see cref="FuzzSettings.NoBuild"/> and a build is there.</summary>
     /// <param name="s">The settings.</param>

@@ -1,6 +1,6 @@
 using System.Globalization;
+using AcPhys.Protocol.Client;
 using AcPhys.Spec.Adapters;
-using AcPhys.Spec.Protocol;
 
 namespace AcPhys.Cli.Impl;
 

@@ -1,6 +1,6 @@
 using System.CommandLine;
 using System.Globalization;
-using AcPhys.Spec.Protocol;
+using AcPhys.Protocol.Client;
 
 namespace AcPhys.Cli.Impl;
 

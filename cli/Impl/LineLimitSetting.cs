@@ -1,4 +1,4 @@
-using AcPhys.Spec.Protocol;
+using AcPhys.Protocol.Messages;
 
 namespace AcPhys.Cli.Impl;
 

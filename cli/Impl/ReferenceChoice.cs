@@ -1,4 +1,5 @@
 using AcPhys.Core;
+using AcPhys.Protocol.Messages;
 using AcPhys.Spec.Adapters;
 
 namespace AcPhys.Cli.Impl;
@@ -15,7 +16,7 @@ internal static class ReferenceChoice
         var names = (text ?? string.Empty).Split(',', StringSplitOptions.RemoveEmptyEntries | StringSplitOptions.TrimEntries);
         return FidelityNames.TryParse(names, out var indoor, out var outdoor, out var bad)
             ? (indoor, outdoor)
-            : throw new UsageException($"unknown fidelity '{AcPhys.Spec.Protocol.Wire.Brief(bad!, 60)}' (known: {string.Join(", ", FidelityNames.Known)})");
+            : throw new UsageException($"unknown fidelity '{Wire.Brief(bad!, 60)}' (known: {string.Join(", ", FidelityNames.Known)})");
     }
 
     /// <summary>Returns the <c>--fidelity</c> names that choose a fidelity again: <c>ace</c> for every ACE difference, else one name per switch.</summary>

@@ -1,3 +1,5 @@
+using AcPhys.Protocol.Client;
+using AcPhys.Protocol.Messages;
 using AcPhys.Spec.Adapters;
 using AcPhys.Spec.Cases;
 using AcPhys.Spec.Corpus;
@@ -36,7 +38,7 @@ internal sealed class VerifyReport(VerifySettings settings, ICellPhysics impl)
         if ((Op.All & ~impl.Ops) != Op.None)
         {
             // A partial implementation: say up front what it offers; invariants needing the rest are NOT TESTED.
-            Terminal.Line($"capabilities: offers {string.Join(", ", OpNames.Names(impl.Ops))}; lacks {string.Join(", ", OpNames.Names(Op.All & ~impl.Ops))}");
+            Terminal.Line($"capabilities: offers {string.Join(", ", OpNames.Names(impl.Ops).Concat(Transports.Negotiated(impl)))}; lacks {string.Join(", ", OpNames.Names(Op.All & ~impl.Ops))}");
         }
 
         if (settings.Fault is not null)
@@ -163,7 +165,7 @@ internal sealed class VerifyReport(VerifySettings settings, ICellPhysics impl)
         if (unknown.Count > 0)
         {
             var run = new GateRun(impl.Name, settings, [], details, TimeSpan.Zero) { UnknownOps = unknown };
-            Terminal.Error("verify", $"warning: the implementation announced ops protocol v1 does not know: {run.UnknownOpsText} (ignored; known: {string.Join(", ", OpNames.Names(Op.All | Op.LoadScene | Op.DatRecords | Op.FindCellWalk | Op.Pipeline))})");
+            Terminal.Error("verify", $"warning: the implementation announced ops protocol v1 does not know: {run.UnknownOpsText} (ignored; known: {string.Join(", ", CapabilityNames.Known())})");
         }
     }
 
@@ -181,7 +183,7 @@ internal sealed class VerifyReport(VerifySettings settings, ICellPhysics impl)
         return run.TooFewTested;
     }
 
-    private IReadOnlyList<string> UnknownOps => impl is Spec.Protocol.ProcessAdapter process ? process.UnknownOps : [];
+    private IReadOnlyList<string> UnknownOps => impl is ProcessAdapter process ? process.UnknownOps : [];
 
     /// <summary>Writes the last line: counts, profile, time.</summary>
     /// <param name="results">The results.</param>

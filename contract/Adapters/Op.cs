@@ -1,6 +1,6 @@
 namespace AcPhys.Spec.Adapters;
 
-/// <summary>The operations an implementation under test may offer; names match protocol v1 (docs/protocol.md).</summary>
+/// <summary>The operations an implementation under test may offer (physics only; a transport negotiates the rest, <see cref="ITransport"/>); names match protocol v1 (docs/protocol.md).</summary>
 [Flags]
 public enum Op
 {
@@ -40,32 +40,6 @@ public enum Op
     /// <summary><c>find_cell_transition</c>: find_cell_scene as a movement transition asks it (no visibility filter); an optional extension of protocol v1.</summary>
     FindCellTransition = 1 << 10,
 
-    /// <summary>
-    /// <c>load_scene</c> / <c>unload_scene</c>: a transport capability, not an operation invariants need — the scene is
-    /// sent once and <c>find_cell</c> names it by <c>scene_id</c> (docs/protocol.md, "Loading a scene once").
-    /// </summary>
-    LoadScene = 1 << 11,
-
-    /// <summary>
-    /// <c>dat_records</c>: with <see cref="LoadScene"/>, the scene is sent as retail dat records (base64) and a manifest
-    /// instead of the project's JSON (docs/protocol.md, "Scenes as dat records"); a transport capability too.
-    /// </summary>
-    DatRecords = 1 << 12,
-
-    /// <summary>
-    /// <c>find_cell_walk</c>: a whole walk in one request, answered with every query's answer (docs/protocol.md, "Whole
-    /// walks"); a transport capability: the walk invariants need <see cref="FindCell"/> or <see cref="FindCellScene"/>.
-    /// </summary>
-    FindCellWalk = 1 << 13,
-
-    /// <summary>
-    /// <c>pipeline</c>: the implementation reads the next request while it answers the last, answers in request order,
-    /// takes a client-chosen <c>scene_id</c> in <c>load_scene</c>, and answers depend only on the request (and the scenes
-    /// loaded); the tool then streams requests without waiting for each answer (docs/protocol.md, "Pipelining"). A
-    /// transport capability, not an operation.
-    /// </summary>
-    Pipeline = 1 << 14,
-
     /// <summary>Every LandDefs operation.</summary>
     LandDefs = BlockIdToLcoord | GidToLcoord | LcoordToGid | InboundValidCellId | GetOutsideLcoord | AdjustToOutside,
 
@@ -73,8 +47,9 @@ public enum Op
     OpenLand = LandDefs | OutsideCells | FindCell | OutsideCellsParts,
 
     /// <summary>
-    /// Every operation: <see cref="OpenLand"/> and scenes, all an invariant may need. <see cref="LoadScene"/>,
-    /// <see cref="DatRecords"/>, <see cref="FindCellWalk"/> and <see cref="Pipeline"/> are transports, not operations, so they are not in it.
+    /// Every operation: <see cref="OpenLand"/> and scenes, all an invariant may need. How scenes and walks travel
+    /// (<c>load_scene</c>, <c>dat_records</c>, <c>find_cell_walk</c>, <c>pipeline</c>) is not an operation: protocol v1
+    /// negotiates it (<see cref="ITransport"/>; AcPhys.Protocol's <c>Capability</c>).
     /// </summary>
     All = OpenLand | FindCellScene | FindCellTransition,
 }
@@ -95,10 +70,6 @@ public static class OpNames
         (Op.OutsideCellsParts, "outside_cells_parts"),
         (Op.FindCellScene, "find_cell_scene"),
         (Op.FindCellTransition, "find_cell_transition"),
-        (Op.LoadScene, "load_scene"),
-        (Op.DatRecords, "dat_records"),
-        (Op.FindCellWalk, "find_cell_walk"),
-        (Op.Pipeline, "pipeline"),
     ];
 
     /// <summary>Returns the protocol names of every flag set in <paramref name="ops"/>.</summary>

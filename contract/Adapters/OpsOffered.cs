@@ -12,9 +12,23 @@ namespace AcPhys.Spec.Adapters;
 /// ones (a finding is re-judged under other declarations to name the deviation that would make it intended).
 /// </summary>
 /// <param name="inner">The implementation.</param>
-/// <param name="mask">The operations (and transports) kept.</param>
-public sealed class OpsOffered(ICellPhysics inner, Op mask) : ICellPhysics
+/// <param name="mask">The operations kept.</param>
+public sealed class OpsOffered(ICellPhysics inner, Op mask) : ICellPhysics, ITransport
 {
+    /// <inheritdoc/>
+    public IReadOnlyList<string> Negotiated => Transports.Negotiated(inner);
+
+    /// <inheritdoc/>
+    /// <remarks>The inner transport's: a finding re-judged under other declarations was sent what the inner one sends.</remarks>
+    public bool ScenesAsRecords => Transports.ScenesAsRecords(inner);
+
+    /// <inheritdoc/>
+    /// <remarks>Never: a run streams through the implementation itself, not through a re-declared view of it.</remarks>
+    public bool Streams => false;
+
+    /// <inheritdoc/>
+    public T Streamed<T>(Func<T> run) => run();
+
     /// <inheritdoc/>
     public string Name =>
         inner.Name

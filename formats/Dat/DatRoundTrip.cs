@@ -36,9 +36,9 @@ public static class DatRoundTrip
             }
         }
 
-        long t = Protocol.WireProfile.Start();
+        long t = Values.WireProfile.Start();
         var export = DatSceneWriter.Write(scene, "wire", "load_scene");
-        Protocol.WireProfile.Stop("tool: DatSceneWriter.Write", t);
+        Values.WireProfile.Stop("tool: DatSceneWriter.Write", t);
         lock (Recent)
         {
             Recent[next] = (scene, export);
@@ -51,7 +51,7 @@ public static class DatRoundTrip
     /// <summary>Returns the scene as the records give it back.</summary>
     /// <param name="scene">A valid scene.</param>
     /// <returns>read(write(scene)), read from the very records <see cref="Records"/> sends.</returns>
-    public static Scene Of(Scene scene) => Cache.GetValue(scene, s => Protocol.WireProfile.Time("tool: records read back (guess's scene)", () =>
+    public static Scene Of(Scene scene) => Cache.GetValue(scene, s => Values.WireProfile.Time("tool: records read back (guess's scene)", () =>
     {
         var export = Records(s);
         var bytes = export.Records.ToDictionary(r => r.Record, r => r.Bytes);

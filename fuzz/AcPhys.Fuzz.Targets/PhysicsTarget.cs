@@ -1,9 +1,9 @@
+using AcPhys.Protocol.Client;
 using AcPhys.Spec.Adapters;
 using AcPhys.Spec.Cases;
 using AcPhys.Spec.Corpus;
 using AcPhys.Spec.Invariants;
 using AcPhys.Spec.Judging;
-using AcPhys.Spec.Protocol;
 
 namespace AcPhys.Fuzz.Targets;
 
@@ -59,7 +59,7 @@ public abstract class PhysicsTarget<TCase> : FuzzTarget
         }
 
         var needs = judges.Select(i => i.WhyNotTestable(impl)).Distinct().Take(3);
-        return $"target {Name}: none of its {judges.Count} invariants is testable for '{impl.Name}' (it offers {string.Join(", ", OpNames.Names(impl.Ops))}): {string.Join("; ", needs)}";
+        return $"target {Name}: none of its {judges.Count} invariants is testable for '{impl.Name}' (it offers {string.Join(", ", OpNames.Names(impl.Ops).Concat(Transports.Negotiated(impl)))}): {string.Join("; ", needs)}";
     }
 
     /// <summary>Gets the invariants of this target that a subject is tested for (the rest are skipped, as in the gate).</summary>

@@ -1,6 +1,7 @@
 using System.Globalization;
+using AcPhys.Protocol.Client;
+using AcPhys.Protocol.Messages;
 using AcPhys.Spec.Adapters;
-using AcPhys.Spec.Protocol;
 
 namespace AcPhys.Fuzz.Targets;
 

@@ -2,8 +2,9 @@ using System.Numerics;
 using System.Text;
 using System.Text.Json;
 using AcPhys.Core;
+using AcPhys.Protocol.Messages;
+using AcPhys.Protocol.Server;
 using AcPhys.Spec.Adapters;
-using AcPhys.Spec.Protocol;
 using AcPhys.Spec.Scenes;
 
 namespace AcPhys.Fuzz.Targets;

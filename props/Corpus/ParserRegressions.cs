@@ -1,9 +1,10 @@
 using System.Text;
 using System.Text.Json;
 using AcPhys.Props.Support;
+using AcPhys.Protocol.Messages;
+using AcPhys.Protocol.Server;
 using AcPhys.Spec.Adapters;
 using AcPhys.Spec.Corpus;
-using AcPhys.Spec.Protocol;
 using AcPhys.Spec.Scenes;
 using Xunit.Abstractions;
 

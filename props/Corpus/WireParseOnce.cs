@@ -1,6 +1,6 @@
 using System.Text;
 using System.Text.Json;
-using AcPhys.Spec.Protocol;
+using AcPhys.Protocol.Messages;
 using Xunit.Abstractions;
 
 namespace AcPhys.Props.Corpus;

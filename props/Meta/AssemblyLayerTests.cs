@@ -4,8 +4,9 @@ using AcPhys.Props.Support;
 namespace AcPhys.Props.Meta;
 
 /// <summary>
-/// The assemblies by job, dependencies one way (docs/architecture.md): core ← contract ← formats ← checking, the
-/// numerics studies above the engine and referenced by none of it. Pinned twice: what each compiled assembly
+/// The assemblies by job, dependencies one way (docs/architecture.md): core ← contract ← formats ← protocol, and
+/// formats ← checking beside it (the engine never references the protocol: issue 42), the numerics studies above the
+/// engine and referenced by none of it. Pinned twice: what each compiled assembly
 /// references, and what its project file declares (a package reference a NuGet consumer would inherit even unused).
 /// </summary>
 public sealed class AssemblyLayerTests
@@ -16,6 +17,7 @@ public sealed class AssemblyLayerTests
         ("AcPhys.Core", "core/AcPhys.Core.csproj", []),
         ("AcPhys.Contract", "contract/AcPhys.Contract.csproj", []),
         ("AcPhys.Formats", "formats/AcPhys.Formats.csproj", []),
+        ("AcPhys.Protocol", "protocol/AcPhys.Protocol.csproj", []),
         ("AcPhys.Spec", "spec/AcPhys.Spec.csproj", ["FsCheck", "FSharp.Core"]),
         ("AcPhys.Studies", "studies/AcPhys.Studies.csproj", ["FsCheck", "FSharp.Core"]),
     ];
@@ -59,6 +61,38 @@ public sealed class AssemblyLayerTests
             .Where(l => System.Reflection.Assembly.Load(l.Assembly).GetReferencedAssemblies().Any(a => a.Name == "AcPhys.Studies"))
             .Select(l => l.Assembly).ToArray();
         Assert.True(users.Length == 0, "AcPhys.Studies is referenced by " + string.Join(", ", users));
+    }
+
+    [Theory(DisplayName = "LAYERS-PROTOCOL: the checking engine does not reference AcPhys.Protocol, compiled or declared: it asks contract's ITransport, never a transport class")]
+    [InlineData("AcPhys.Spec", "spec/AcPhys.Spec.csproj")]
+    [InlineData("AcPhys.Studies", "studies/AcPhys.Studies.csproj")]
+    public void Engine_DoesNotReferenceProtocol(string name, string projectFile)
+    {
+        var refs = System.Reflection.Assembly.Load(name).GetReferencedAssemblies().Select(a => a.Name!).ToArray();
+        Assert.DoesNotContain("AcPhys.Protocol", refs);
+        var project = XDocument.Load(Path.Combine(RepoPaths.Root, projectFile));
+        var projectRefs = project.Descendants("ProjectReference").Select(e => Path.GetFileNameWithoutExtension((string)e.Attribute("Include")!)).ToArray();
+        Assert.DoesNotContain("AcPhys.Protocol", projectRefs);
+    }
+
+    [Fact(DisplayName = "LAYERS-PROTOCOL: AcPhys.Formats holds no process runtime (no kill, poll, fcntl or setsid P/Invoke: those are AcPhys.Protocol's) and no protocol namespace")]
+    public void Formats_HoldsNoProcessRuntime()
+    {
+        var formats = System.Reflection.Assembly.Load("AcPhys.Formats");
+        Assert.Empty(ProcessCalls(formats));
+        Assert.Empty(formats.GetTypes().Where(t => t.Namespace?.EndsWith(".Protocol", StringComparison.Ordinal) == true).Select(t => t.FullName));
+        Assert.NotEmpty(ProcessCalls(System.Reflection.Assembly.Load("AcPhys.Protocol"))); // the check can fail: the runtime is there
+    }
+
+    // The native process-management entry points an assembly imports (a stat of a file is not one).
+    private static string[] ProcessCalls(System.Reflection.Assembly assembly)
+    {
+        const System.Reflection.BindingFlags All = System.Reflection.BindingFlags.Public | System.Reflection.BindingFlags.NonPublic | System.Reflection.BindingFlags.Static | System.Reflection.BindingFlags.Instance | System.Reflection.BindingFlags.DeclaredOnly;
+        string[] process = ["kill", "poll", "fcntl", "setsid", "setpgid", "waitpid"];
+        return [.. assembly.GetTypes().SelectMany(t => t.GetMethods(All))
+            .Select(m => (Method: m, Import: System.Reflection.CustomAttributeExtensions.GetCustomAttribute<System.Runtime.InteropServices.DllImportAttribute>(m)))
+            .Where(p => p.Import is { } i && process.Contains(i.EntryPoint ?? p.Method.Name))
+            .Select(p => p.Method.DeclaringType!.Name + "." + p.Method.Name)];
     }
 
     private static (HashSet<string> Layers, HashSet<string> Packages) Allowed(string name)

@@ -1,14 +1,16 @@
 using AcPhys.Core;
 using AcPhys.Props.Support;
+using AcPhys.Protocol.Messages;
+using AcPhys.Protocol.Pipeline;
 using AcPhys.Spec.Adapters;
-using AcPhys.Spec.Protocol;
 using FsCheck;
 using FsCheck.Fluent;
 
 namespace AcPhys.Props.Protocol;
 
 /// <summary>
-/// ANSWER-LINE-READS-BACK: the line the pipelined transport expects for a guess reads back, through the readers the
+/// ANSWER-LINE-READS-BACK: the line the pipelined transport expects for a guess (each shape of the message table,
+/// <see cref="Answers"/>, issue 42) reads back, through the readers the
 /// tool applies to a child's answer, as exactly that guess (issue 26). The transport accepts an answer whose text is
 /// that line without parsing it, so this is what makes the shortcut the same as the comparison by value.
 /// </summary>
@@ -32,7 +34,7 @@ public sealed class AnswerLineReadsBack
     [CiProperty(MaxTest = 3000, DisplayName = "ANSWER-LINE-READS-BACK: a find_cell guess's expected line reads back as the same answer (cells, containing, loaded, hits_interior_cell)")]
     public Property FindCellReadsBack() =>
         Prop.ForAll(FindCells.ToArbitrary(), r =>
-            Same(ExpectedAnswer.Line(r), a => Wire.ReadFindCell(a), r)
+            Same(Answers.FindCell, r)
                 .Classify(r.Loaded is null, "no loaded")
                 .Classify(r.HitsInteriorCell is null, "no hits_interior_cell")
                 .Classify(r.Cells.Count == 0, "no cells"));
@@ -40,7 +42,7 @@ public sealed class AnswerLineReadsBack
     [CiProperty(MaxTest = 1000, DisplayName = "ANSWER-LINE-READS-BACK: a find_cell_walk guess's expected line reads back as the same answers, one per query")]
     public Property WalkReadsBack() =>
         Prop.ForAll(Gen.ListOf(FindCells).Select(l => l.Take(6).ToArray()).ToArbitrary(), walk =>
-            Same(ExpectedAnswer.Line((IReadOnlyList<FindCellResult>)walk), a => WalkWire.ReadAnswer(a, walk.Length), (IReadOnlyList<FindCellResult>)walk)
+            Same(Answers.Walk(walk.Length), (IReadOnlyList<FindCellResult>)walk)
                 .Classify(walk.Length == 0, "empty walk"));
 
     [CiProperty(MaxTest = 3000, DisplayName = "ANSWER-LINE-READS-BACK: an adjust_to_outside guess reads back bit for bit (-0, subnormals, infinities); a NaN gets no expected line")]
@@ -49,8 +51,8 @@ public sealed class AnswerLineReadsBack
         {
             var r = new AdjustResult(t.Item1.Item1, t.Item1.Item2, t.Item2.Item1, t.Item2.Item2);
             bool nan = float.IsNaN(r.X) || float.IsNaN(r.Y);
-            string? line = ExpectedAnswer.Line(r);
-            return (nan ? line is null : Same(line, a => new AdjustResult(Wire.ReadBool(a, "ok"), Wire.ReadCell(a, "cell"), Wire.ReadFloat(a, "x"), Wire.ReadFloat(a, "y")), r))
+            string? line = Answers.Adjust.ExpectedLine(r);
+            return (nan ? line is null : Same(Answers.Adjust, r))
                 .Classify(nan, "NaN: compared by value");
         });
 
@@ -62,12 +64,12 @@ public sealed class AnswerLineReadsBack
             var (ok, cells) = t.Item2;
             var lcoord = (ok, n, -n);
             string id = "t" + n.ToString(System.Globalization.CultureInfo.InvariantCulture) + (ok ? "\"\\é" : string.Empty);
-            return Same(ExpectedAnswer.Line(lcoord), a => (Wire.ReadBool(a, "ok"), Wire.ReadInt(a, "x"), Wire.ReadInt(a, "y")), lcoord)
-                && Same(ExpectedAnswer.Line(cell), a => Wire.ReadCell(a, "cell"), cell)
-                && ExpectedAnswer.Line(cell) == "{\"cell\":\"" + AcPhys.Core.Text.CellIdText.Format(cell) + "\"}" // the text cell ids have everywhere
-                && Same(ExpectedAnswer.Line((IReadOnlyList<CellId>)cells), a => Wire.ReadCells(a, "cells"), (IReadOnlyList<CellId>)cells)
-                && Same(ExpectedAnswer.Line(ok), a => Wire.ReadBool(a, "ok"), ok)
-                && Same(ExpectedAnswer.Line(id), a => Wire.ReadString(a, "scene_id"), id);
+            return Same(Answers.Lcoord, lcoord)
+                && Same(Answers.Cell, cell)
+                && Answers.Cell.ExpectedLine(cell) == "{\"cell\":\"" + AcPhys.Core.Text.CellIdText.Format(cell) + "\"}" // the text cell ids have everywhere
+                && Same(Answers.Cells, (IReadOnlyList<CellId>)cells)
+                && Same(Answers.Ok, ok)
+                && Same(Answers.SceneId, id);
         });
 
     [CiProperty(MaxTest = 3000, DisplayName = "ANSWER-LINE-READS-BACK: the character matcher accepts an answer exactly when it is the guess's written line (pairs of find_cell answers and walks, and one-character edits)")]
@@ -75,17 +77,17 @@ public sealed class AnswerLineReadsBack
         Prop.ForAll(Gen.Zip(Gen.Zip(FindCells, FindCells), Gen.Zip(Gen.Choose(0, 1000), Gen.Elements('0', 'F', 'f', '"', ',', 'x', ' '))).ToArbitrary(), t =>
         {
             var ((a, b), (at, c)) = t;
-            string la = ExpectedAnswer.Line(a)!, lb = ExpectedAnswer.Line(b)!;
+            string la = Answers.FindCell.ExpectedLine(a)!, lb = Answers.FindCell.ExpectedLine(b)!;
             var edited = la.ToCharArray();
             edited[at % edited.Length] = c;
             string le = new(edited);
             IReadOnlyList<FindCellResult> walk = [a, b], other = [b, a];
-            string lw = ExpectedAnswer.Line(walk)!, lo = ExpectedAnswer.Line(other)!;
-            return (Is(la, a) && Is(lb, b) && Is(lw, walk)
-                    && Is(lb, a) == (lb == la)
-                    && Is(le, a) == (le == la)
-                    && Is(lo, walk) == (lo == lw)
-                    && !Is(la + " ", a) && !Is(la[..^1], a))
+            string lw = Answers.Walk(2).ExpectedLine(walk)!, lo = Answers.Walk(2).ExpectedLine(other)!;
+            return (Is(Answers.FindCell, la, a) && Is(Answers.FindCell, lb, b) && Is(Answers.Walk(2), lw, walk)
+                    && Is(Answers.FindCell, lb, a) == (lb == la)
+                    && Is(Answers.FindCell, le, a) == (le == la)
+                    && Is(Answers.Walk(2), lo, walk) == (lo == lw)
+                    && !Is(Answers.FindCell, la + " ", a) && !Is(Answers.FindCell, la[..^1], a))
                 .Classify(lb == la, "same answer drawn twice")
                 .Classify(le == la, "edit left the line as it was");
         });
@@ -94,22 +96,23 @@ public sealed class AnswerLineReadsBack
     public void UnparallelLoadedHasNoLine()
     {
         var r = new FindCellResult([new CellId(0xA9B40017u)], CellId.None) { Loaded = [true, false] };
-        Assert.Null(ExpectedAnswer.Line(r));
-        Assert.NotNull(ExpectedAnswer.Line(r with { Loaded = [true] }));
+        Assert.Null(Answers.FindCell.ExpectedLine(r));
+        Assert.NotNull(Answers.FindCell.ExpectedLine(r with { Loaded = [true] }));
     }
 
-    // The line is read as the transport reads an answer (Wire.Parse, strict), then compared as the slow path compares.
-    private static bool Same<T>(string? line, Func<System.Text.Json.JsonElement, T> read, T guess)
+    // The shape's expected line is read as the transport reads an answer (Wire.Parse, strict, then the shape's own
+    // read), compared as the slow path compares, and matched by the shape's own match: write, read and match agree.
+    private static bool Same<T>(Answer<T> shape, T guess)
     {
-        if (line is null)
+        if (shape.ExpectedLine(guess) is not { } line)
         {
             return false;
         }
 
         using var doc = Wire.Parse(line);
-        return SameAnswer.Of(read(doc.RootElement), guess) && Is(line, guess);
+        return SameAnswer.Of(shape.Read(doc.RootElement), guess) && Is(shape, line, guess);
     }
 
     // The transport compares the answer's UTF-8 bytes.
-    private static bool Is(string line, object? guess) => ExpectedAnswer.Is(System.Text.Encoding.UTF8.GetBytes(line), guess);
+    private static bool Is<T>(Answer<T> shape, string line, T guess) => shape.Is(System.Text.Encoding.UTF8.GetBytes(line), guess);
 }

@@ -1,5 +1,5 @@
 using System.Text;
-using AcPhys.Spec.Protocol;
+using AcPhys.Protocol.Child;
 
 namespace AcPhys.Props.Protocol;
 

@@ -122,7 +122,7 @@ public static class ConformanceInvariants
             return Outcome.VacuousBecause("the implementation offers neither find_cell_scene nor find_cell_transition");
         }
 
-        var scene = (impl.Ops & Op.DatRecords) != 0 ? DatRoundTrip.Of(w.Scene) : w.Scene; // what the implementation was sent
+        var scene = Transports.ScenesAsRecords(impl) ? DatRoundTrip.Of(w.Scene) : w.Scene; // what the implementation was sent
         foreach (bool loadCells in SceneQueryKinds.Offered(impl.Ops))
         {
             var trace = SceneWalkRunner.Run(impl, w, loadCells);

@@ -2,7 +2,6 @@ using System.Diagnostics;
 using AcPhys.Spec.Adapters;
 using AcPhys.Spec.Cases;
 using AcPhys.Spec.Invariants;
-using AcPhys.Spec.Protocol;
 using FsCheck;
 using FsCheck.Fluent;
 using Outcome = AcPhys.Spec.Invariants.Outcome;
@@ -27,16 +26,16 @@ public static class CatalogueRunner
     /// <typeparam name="TCase">The case type.</typeparam>
     public static InvariantResult Run<TCase>(Invariant<TCase> invariant, ICellPhysics impl, int cases, Seed seed, Action<string>? sink = null, int maxClasses = MaxClasses)
     {
-        if (impl is not ProcessAdapter { Pipelines: true } process)
+        if (impl is not ITransport { Streams: true } transport)
         {
             return RunClasses(invariant, impl, cases, seed, sink, maxClasses);
         }
 
         // A child that pipelines: the run is speculated and streamed, and replayed only when an answer differs
-        // (ProcessAdapter.Pipelined); the class distribution of the run that stands is the one passed on.
+        // (ITransport.Streamed); the class distribution of the run that stands is the one passed on.
         var wall = Stopwatch.StartNew();
         List<string>? said = null;
-        var result = process.Pipelined(() =>
+        var result = transport.Streamed(() =>
         {
             said = sink is null ? null : [];
             return RunClasses(invariant, impl, cases, seed, said is null ? null : said.Add, maxClasses);
@@ -267,7 +266,7 @@ public static class CatalogueRunner
         var result = invariant.Run(impl, profile.CasesPerInvariant, seed, maxClasses: maxClasses);
         if (profile.Exhaustive && result.Status == ResultStatus.Passed && fixedSeed is null && invariant is Invariant<LandCase> land)
         {
-            var sweep = impl is ProcessAdapter { Pipelines: true } piped ? piped.Pipelined(() => Exhaustive.For(land, impl)) : Exhaustive.For(land, impl); // --sweeps served: streamed too
+            var sweep = Transports.Streamed(impl, () => Exhaustive.For(land, impl)); // --sweeps served: streamed too
             if (sweep is not null)
             {
                 result = result with
