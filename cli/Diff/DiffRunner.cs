@@ -1,5 +1,6 @@
 using System.Diagnostics;
 using AcPhys.Spec.Adapters;
+using AcPhys.Spec.Generators;
 using AcPhys.Spec.Running;
 
 namespace AcPhys.Cli.Diff;
@@ -81,31 +82,23 @@ internal static class DiffRunner
         return new DiffResult(check, seed) { Cases = seen, Divergent = divergent, Classes = result, Elapsed = stopwatch.Elapsed };
     }
 
-    // Greedy shrinking with the domain's own shrinker: take the first smaller input that stays in the class, until
-    // none does or the budget is spent. Deterministic: the shrinker's candidates come in a fixed order.
+    // Greedy shrinking (GreedyShrink) with the domain's own shrinker: the smaller input must stay in the class.
     private static (TCase Input, Divergence Divergence) Shrink<TCase>(DiffCheck<TCase> check, ICellPhysics impl, TCase input, Divergence divergence)
     {
-        int spent = 0;
-        bool smaller = true;
-        while (smaller && spent < ShrinkBudget)
+        var last = divergence;
+        bool SameClass(TCase candidate)
         {
-            smaller = false;
-            foreach (var candidate in check.Domain.Arbitrary.Shrinker(input))
+            if (check.Compare(impl, candidate) is Divergence d && d.Key == divergence.Key)
             {
-                if (++spent > ShrinkBudget)
-                {
-                    break;
-                }
-
-                if (check.Compare(impl, candidate) is Divergence d && d.Key == divergence.Key)
-                {
-                    (input, divergence, smaller) = (candidate, d, true);
-                    break;
-                }
+                last = d;
+                return true;
             }
+
+            return false;
         }
 
-        return (input, divergence);
+        var shrunk = GreedyShrink.Run(input, check.Domain.Arbitrary.Shrinker, SameClass, ShrinkBudget);
+        return (shrunk, last);
     }
 
     // What one class has seen so far: its first divergence and input, how many inputs, over which input classes.

@@ -75,29 +75,14 @@ internal static class ReplayPrinter
 
     private static void WriteCase(AnyCase c, ICellPhysics impl)
     {
-        switch (c)
+        foreach (string line in c.Match<string[]>(
+            land => [$"  case {land.Case}"],
+            q => [$"  query {q.Query}"],
+            w => [$"  {w.Walk}"],
+            sw => [$"  {sw.Walk.Scene}", $"  {sw.Walk.Size}"],
+            p => (impl.Ops & Op.OutsideCellsParts) != 0 ? [$"  {p.Parts}", $"  cells [{string.Join(", ", impl.OutsideCellsParts(p.Parts.Parts))}]"] : [$"  {p.Parts}"]))
         {
-            case AnyCase.LandQuery land:
-                Terminal.Line($"  case {land.Case}");
-                break;
-            case AnyCase.OutdoorQuery q:
-                Terminal.Line($"  query {q.Query}");
-                break;
-            case AnyCase.OutdoorWalk w:
-                Terminal.Line($"  {w.Walk}");
-                break;
-            case AnyCase.WalkInScene sw:
-                Terminal.Line($"  {sw.Walk.Scene}");
-                Terminal.Line($"  {sw.Walk.Size}");
-                break;
-            case AnyCase.PartsQuery p:
-                Terminal.Line($"  {p.Parts}");
-                if ((impl.Ops & Op.OutsideCellsParts) != 0)
-                {
-                    Terminal.Line($"  cells [{string.Join(", ", impl.OutsideCellsParts(p.Parts.Parts))}]");
-                }
-
-                break;
+            Terminal.Line(line);
         }
     }
 

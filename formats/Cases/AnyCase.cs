@@ -2,7 +2,9 @@ namespace AcPhys.Spec.Cases;
 
 /// <summary>
 /// One case of any kind, as runners report it, files store it and the judge (<c>Judges</c>) judges it: a
-/// closed set, one subtype per <see cref="CaseKind"/>, so a switch over it is checked for completeness.
+/// closed set, one subtype per <see cref="CaseKind"/>. C# does not check a switch over a class hierarchy for
+/// completeness, so code that handles every kind calls <see cref="Match{T}"/> (one function per kind): a new kind adds a
+/// parameter there, and every such place stops compiling until it handles the kind.
 /// </summary>
 /// <remarks>Immutable.</remarks>
 public abstract record AnyCase
@@ -16,6 +18,16 @@ public abstract record AnyCase
 
     /// <summary>Gets the case value itself (a <see cref="LandCase"/>, <see cref="OutdoorCase"/>, <see cref="Cases.Walk"/>, <see cref="Cases.SceneWalk"/> or <see cref="PartsCase"/>).</summary>
     public abstract object Value { get; }
+
+    /// <summary>Calls the function of this case's kind (the compiler checks every kind is handled).</summary>
+    /// <typeparam name="T">The result type.</typeparam>
+    /// <param name="land">For a LandDefs input.</param>
+    /// <param name="query">For an open-land query.</param>
+    /// <param name="walk">For a walk on open land.</param>
+    /// <param name="sceneWalk">For a walk through a scene.</param>
+    /// <param name="parts">For a parts query.</param>
+    /// <returns>What the function of this kind returns.</returns>
+    public abstract T Match<T>(Func<LandQuery, T> land, Func<OutdoorQuery, T> query, Func<OutdoorWalk, T> walk, Func<WalkInScene, T> sceneWalk, Func<PartsQuery, T> parts);
 
     /// <summary>Wraps a case value of any kind, or returns null for a value that is not a case (a walk of either kind is unwrapped).</summary>
     /// <param name="value">The value.</param>
@@ -64,6 +76,10 @@ public abstract record AnyCase
 
         /// <inheritdoc/>
         public override object Value => Case;
+
+        /// <inheritdoc/>
+        public override T Match<T>(Func<LandQuery, T> land, Func<OutdoorQuery, T> query, Func<OutdoorWalk, T> walk, Func<WalkInScene, T> sceneWalk, Func<PartsQuery, T> parts) =>
+            land(this);
     }
 
     /// <summary>One open-land query: a cell, spheres, an origin (kind <c>query</c>).</summary>
@@ -75,6 +91,10 @@ public abstract record AnyCase
 
         /// <inheritdoc/>
         public override object Value => Query;
+
+        /// <inheritdoc/>
+        public override T Match<T>(Func<LandQuery, T> land, Func<OutdoorQuery, T> query, Func<OutdoorWalk, T> walk, Func<WalkInScene, T> sceneWalk, Func<PartsQuery, T> parts) =>
+            query(this);
     }
 
     /// <summary>A walk on open land (kind <c>walk</c>).</summary>
@@ -86,6 +106,10 @@ public abstract record AnyCase
 
         /// <inheritdoc/>
         public override object Value => Walk;
+
+        /// <inheritdoc/>
+        public override T Match<T>(Func<LandQuery, T> land, Func<OutdoorQuery, T> query, Func<OutdoorWalk, T> walk, Func<WalkInScene, T> sceneWalk, Func<PartsQuery, T> parts) =>
+            walk(this);
 
         /// <summary>
         /// Gets why the reference cannot judge this walk, or null when it can: a walk starts in a land cell (facts §2:
@@ -105,6 +129,10 @@ public abstract record AnyCase
 
         /// <inheritdoc/>
         public override object Value => Walk;
+
+        /// <inheritdoc/>
+        public override T Match<T>(Func<LandQuery, T> land, Func<OutdoorQuery, T> query, Func<OutdoorWalk, T> walk, Func<WalkInScene, T> sceneWalk, Func<PartsQuery, T> parts) =>
+            sceneWalk(this);
     }
 
     /// <summary>A parts / bounding-box query (kind <c>parts</c>).</summary>
@@ -116,5 +144,9 @@ public abstract record AnyCase
 
         /// <inheritdoc/>
         public override object Value => Parts;
+
+        /// <inheritdoc/>
+        public override T Match<T>(Func<LandQuery, T> land, Func<OutdoorQuery, T> query, Func<OutdoorWalk, T> walk, Func<WalkInScene, T> sceneWalk, Func<PartsQuery, T> parts) =>
+            parts(this);
     }
 }

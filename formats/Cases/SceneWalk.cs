@@ -13,7 +13,7 @@ public sealed record SceneWalk(Scene Scene, Walk Walk)
     private readonly SceneRoute? route;
 
     /// <summary>Gets the recipe the case was built from, or null for a stored case.</summary>
-    public SceneRecipe? Recipe { get; init; }
+    public ISceneRecipe? Recipe { get; init; }
 
     /// <summary>
     /// Gets the route the walk takes: the recipe's, or the one a stored file names (a file keeps no recipe, but ENTER-EXIT

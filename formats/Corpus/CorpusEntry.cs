@@ -56,15 +56,7 @@ public sealed record CorpusEntry
     /// <summary>Returns the file kind of a case kind.</summary>
     /// <param name="kind">The case kind.</param>
     /// <returns><c>land</c>, <c>query</c>, <c>walk</c>, <c>scene-walk</c> or <c>parts</c>.</returns>
-    public static string KindName(CaseKind kind) => kind switch
-    {
-        CaseKind.Land => "land",
-        CaseKind.Query => "query",
-        CaseKind.Walk => "walk",
-        CaseKind.SceneWalk => "scene-walk",
-        CaseKind.Parts => "parts",
-        _ => throw new ArgumentOutOfRangeException(nameof(kind), kind, "not a case kind"),
-    };
+    public static string KindName(CaseKind kind) => kind.Pick("land", "query", "walk", "scene-walk", "parts");
 
     /// <summary>Wraps a failing case of any kind as an entry, or returns null when there is no case.</summary>
     /// <param name="c">The case (an <see cref="AnyCase"/> or a case value of any kind).</param>
@@ -76,15 +68,11 @@ public sealed record CorpusEntry
     public static CorpusEntry? From(object? c, string title, string? invariant, string foundBy, string? seed = null)
     {
         var header = new CorpusEntry { Title = title, Invariant = invariant, FoundBy = foundBy, Seed = seed };
-        return AnyCase.Of(c) switch
-        {
-            AnyCase.LandQuery land => header with { Case = land.Case },
-            AnyCase.OutdoorQuery q => header with { Query = q.Query },
-            AnyCase.OutdoorWalk walk => header with { Walk = walk.Walk },
-            AnyCase.WalkInScene sw => header with { SceneWalk = sw.Walk },
-            AnyCase.PartsQuery parts => header with { Parts = parts.Parts },
-            null => null,
-            _ => throw new ArgumentOutOfRangeException(nameof(c), c, "not a case kind"),
-        };
+        return AnyCase.Of(c)?.Match(
+            land => header with { Case = land.Case },
+            q => header with { Query = q.Query },
+            walk => header with { Walk = walk.Walk },
+            sw => header with { SceneWalk = sw.Walk },
+            parts => header with { Parts = parts.Parts });
     }
 }

@@ -2,6 +2,7 @@ using AcPhys.Protocol.Client;
 using AcPhys.Spec.Adapters;
 using AcPhys.Spec.Cases;
 using AcPhys.Spec.Corpus;
+using AcPhys.Spec.Generators;
 using AcPhys.Spec.Invariants;
 using AcPhys.Spec.Judging;
 
@@ -168,27 +169,18 @@ public abstract class PhysicsTarget<TCase> : FuzzTarget
             return null; // it does not fail the same way on a fresh implementation: kept as a raw input by triage
         }
 
-        var current = start;
-        int budget = ShrinkBudget;
-        bool progressed = true;
-        while (progressed && budget > 0)
+        bool StillFails(TCase candidate)
         {
-            progressed = false;
-            foreach (var candidate in Shrink(current))
+            if (FailureOf(candidate) is { } v)
             {
-                if (--budget < 0)
-                {
-                    break;
-                }
-
-                if (FailureOf(candidate) is { } v)
-                {
-                    (current, violation) = (candidate, v);
-                    progressed = true;
-                    break;
-                }
+                violation = v;
+                return true;
             }
+
+            return false;
         }
+
+        var current = GreedyShrink.Run(start, Shrink, StillFails, ShrinkBudget);
 
         var entry = CorpusEntry.From(current, $"{violation.InvariantId}: {violation.Message}", violation.InvariantId, FinderNames.Fuzz, origin)
             ?? throw new InvalidOperationException($"{typeof(TCase).Name} has no corpus format");

@@ -61,7 +61,7 @@ public sealed class SceneTargetTests
         byte[] input = Convert.FromHexString("00fa0000fa6e7474747474000000730000");
         var sw = Target.Decode(input);
 
-        Assert.True(sw.Recipe!.Cottage!.LoadNeighbours);
+        Assert.True(((SceneRecipe)sw.Recipe!).Cottage!.LoadNeighbours);
         Assert.Empty(sw.Scene.UnloadedBlocks);
         Assert.Null(Target.Classify(input, fault: null));
         var inBlock = new byte[SceneCodec.Length];
@@ -81,8 +81,8 @@ public sealed class SceneTargetTests
         byte[] input = Convert.FromHexString(hex);
         var sw = Target.Decode(input);
 
-        Assert.Equal(0, sw.Recipe!.Cottage!.Block.X);
-        Assert.True(sw.Walk.Steps.Count < sw.Recipe.Take, $"not cut: {sw.Walk.Steps.Count} steps");
+        Assert.Equal(0, ((SceneRecipe)sw.Recipe!).Cottage!.Block.X);
+        Assert.True(sw.Walk.Steps.Count < ((SceneRecipe)sw.Recipe).Take, $"not cut: {sw.Walk.Steps.Count} steps");
         Assert.Null(Target.Classify(input, fault: null));
     }
 

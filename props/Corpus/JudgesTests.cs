@@ -76,7 +76,9 @@ public sealed class JudgesTests
         _ => false,
     };
 
-    private static IEnumerable<AnyCase> OneOfEachKind()
+    /// <summary>Returns one case of each kind (CaseKindTests checks every kind is here).</summary>
+    /// <returns>The cases.</returns>
+    internal static IEnumerable<AnyCase> OneOfEachKind()
     {
         yield return new LandCase(new CellId(0xA9B40031), 30.5f, 12f, new Lcoord(1354, 1444));
         yield return new OutdoorCase(new CellId(0xA9B40031), [new Sphere(new Vector3(30.5f, 12f, 0.5f), 0.5f)]);

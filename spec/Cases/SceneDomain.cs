@@ -15,7 +15,7 @@ public sealed class SceneDomain : ICaseDomain<SceneWalk>
     /// <inheritdoc/>
     public IEnumerable<string> Classes(SceneWalk w)
     {
-        if (w.Recipe is not { } r)
+        if (w.Recipe is not SceneRecipe r)
         {
             yield return "scene:stored";
             yield break;

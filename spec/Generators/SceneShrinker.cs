@@ -14,7 +14,7 @@ public static class SceneShrinker
     /// <returns>Candidates.</returns>
     public static IEnumerable<SceneWalk> Shrink(SceneWalk w)
     {
-        if (w.Recipe is null)
+        if (w.Recipe is not SceneRecipe recipe)
         {
             for (int n = w.Walk.Steps.Count / 2; n < w.Walk.Steps.Count; n = n == 0 ? 1 : n + Math.Max(1, (w.Walk.Steps.Count - n) / 2))
             {
@@ -25,7 +25,7 @@ public static class SceneShrinker
         }
 
         int steps = w.Walk.Steps.Count;
-        foreach (var r in Recipes(w.Recipe, steps).Distinct().Where(r => r != w.Recipe))
+        foreach (var r in Recipes(recipe, steps).Distinct().Where(r => r != recipe))
         {
             yield return r.Build();
         }

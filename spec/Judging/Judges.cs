@@ -27,15 +27,7 @@ public static class Judges
     /// <summary>Returns the invariants that judge a case kind, in the order they are asked.</summary>
     /// <param name="kind">The kind.</param>
     /// <returns>The invariants.</returns>
-    public static IReadOnlyList<Invariant> For(CaseKind kind) => kind switch
-    {
-        CaseKind.Land => LandJudges,
-        CaseKind.Query => QueryJudges,
-        CaseKind.Walk => WalkJudges,
-        CaseKind.SceneWalk => SceneJudges,
-        CaseKind.Parts => PartsJudges,
-        _ => throw new ArgumentOutOfRangeException(nameof(kind), kind, "not a case kind"),
-    };
+    public static IReadOnlyList<Invariant> For(CaseKind kind) => kind.Pick(LandJudges, QueryJudges, WalkJudges, SceneJudges, PartsJudges);
 
     /// <summary>Returns the case kinds an invariant judges.</summary>
     /// <param name="invariant">The invariant.</param>
@@ -65,15 +57,12 @@ public static class Judges
     public static Violation ViolationOf(Judged verdict, AnyCase c) =>
         new(verdict.Invariant.Id, verdict.Outcome?.Message ?? "violated", c.ToString()) { Case = c, Step = verdict.Outcome?.Step };
 
-    private static IEnumerable<Judged> Verdicts(ICellPhysics impl, AnyCase c) => c switch
-    {
-        AnyCase.LandQuery land => Each(impl, LandInvariants.All.Append(ConformanceInvariants.LandDefs), land.Case),
-        AnyCase.OutdoorQuery q => Each(impl, StepJudges.Append(ConformanceInvariants.FindCellQuery), q.Query),
-        AnyCase.OutdoorWalk w => WalkVerdicts(impl, w),
-        AnyCase.WalkInScene sw => Each(impl, InvariantCatalogue.SceneInvariants, sw.Walk).Append(One(impl, ConformanceInvariants.FindCell, new AnyWalk(null, sw.Walk))),
-        AnyCase.PartsQuery p => Each(impl, PartsInvariants.All, p.Parts),
-        _ => throw new ArgumentOutOfRangeException(nameof(c), c, "not a case kind"),
-    };
+    private static IEnumerable<Judged> Verdicts(ICellPhysics impl, AnyCase c) => c.Match(
+        land => Each(impl, LandInvariants.All.Append(ConformanceInvariants.LandDefs), land.Case),
+        q => Each(impl, StepJudges.Append(ConformanceInvariants.FindCellQuery), q.Query),
+        w => WalkVerdicts(impl, w),
+        sw => Each(impl, InvariantCatalogue.SceneInvariants, sw.Walk).Append(One(impl, ConformanceInvariants.FindCell, new AnyWalk(null, sw.Walk))),
+        p => Each(impl, PartsInvariants.All, p.Parts));
 
     private static IEnumerable<Judged> WalkVerdicts(ICellPhysics impl, AnyCase.OutdoorWalk w)
     {
