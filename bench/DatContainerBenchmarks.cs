@@ -1,6 +1,6 @@
 using AcPhys.Core;
-using AcPhys.Spec.Dat;
-using AcPhys.Spec.Dat.Container;
+using AcPhys.Formats.Dat;
+using AcPhys.Formats.Dat.Container;
 using AcPhys.Spec.Scenes;
 using BenchmarkDotNet.Attributes;
 using BenchmarkDotNet.Engines;

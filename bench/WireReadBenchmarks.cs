@@ -1,6 +1,7 @@
 using System.Reflection;
+using AcPhys.Contract;
+using AcPhys.Formats.Scenes;
 using AcPhys.Protocol.Messages;
-using AcPhys.Spec.Scenes;
 using BenchmarkDotNet.Attributes;
 
 namespace AcPhys.Bench;
@@ -50,7 +51,7 @@ public class WireReadBenchmarks
     }
 
     [Benchmark(Description = "client: the load_scene scene written as dat records")]
-    public int WriteSceneRecords() => AcPhys.Spec.Dat.DatSceneWriter.Write(sceneForRecords, "wire", "load_scene").Records.Count;
+    public int WriteSceneRecords() => AcPhys.Formats.Dat.DatSceneWriter.Write(sceneForRecords, "wire", "load_scene").Records.Count;
 
     [Benchmark(Description = "client: find_cell answer (147 B)")]
     public int FindCellAnswer()

@@ -1,6 +1,6 @@
 using System.Runtime.InteropServices;
-using AcPhys.Spec.Adapters;
-using AcPhys.Spec.Corpus;
+using AcPhys.Contract;
+using AcPhys.Formats.Corpus;
 
 namespace AcPhys.Cli;
 
@@ -108,7 +108,7 @@ internal static class Guard
     }
 
     private static string FirstLine(string message) =>
-        AcPhys.Spec.Values.InputQuote.Brief(message.Split('\n', 2)[0].TrimEnd('\r'), 200);
+        AcPhys.Formats.Values.InputQuote.Brief(message.Split('\n', 2)[0].TrimEnd('\r'), 200);
 
     private static int Report(string verb, Exception error)
     {
@@ -117,10 +117,10 @@ internal static class Guard
             case OutputPathException:
                 Terminal.Error(verb, error.Message);
                 return ExitCodes.OutputError;
-            case AcPhys.Spec.Dat.Container.DatContainerException:
+            case AcPhys.Formats.Dat.Container.DatContainerException:
                 Terminal.Error(verb, error.Message);
                 return ExitCodes.BadDat;
-            case UsageException or CorpusFormatException or AcPhys.Spec.Dat.DatFormatException:
+            case UsageException or CorpusFormatException or AcPhys.Formats.Dat.DatFormatException:
                 Terminal.Error(verb, error.Message);
                 break;
             case AdapterFailureException:

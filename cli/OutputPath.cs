@@ -1,4 +1,4 @@
-using AcPhys.Spec.Corpus;
+using AcPhys.Formats.Corpus;
 
 namespace AcPhys.Cli;
 

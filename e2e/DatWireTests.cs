@@ -1,11 +1,12 @@
 using System.Text.Json;
 using System.Text.Json.Nodes;
+using AcPhys.Contract;
 using AcPhys.E2E.Support;
+using AcPhys.Formats.Corpus;
+using AcPhys.Formats.Scenes;
 using AcPhys.Protocol.Messages;
 using AcPhys.Protocol.Server;
-using AcPhys.Spec.Adapters;
 using AcPhys.Spec.Cases;
-using AcPhys.Spec.Corpus;
 using AcPhys.Spec.Scenes;
 
 namespace AcPhys.E2E;

@@ -1,6 +1,7 @@
 using AcPhys.Cli.Diff;
+using AcPhys.Contract;
 using AcPhys.Core;
-using AcPhys.Spec.Adapters;
+using AcPhys.Formats.Cases;
 using AcPhys.Spec.Cases;
 using AcPhys.Spec.Faults;
 using AcPhys.Spec.Running;

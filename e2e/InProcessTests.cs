@@ -1,5 +1,5 @@
+using AcPhys.Contract;
 using AcPhys.E2E.Support;
-using AcPhys.Spec.Adapters;
 
 namespace AcPhys.E2E;
 
@@ -48,7 +48,7 @@ public sealed class InProcessTests
     {
         var run = Acphys.Run(["verify", "--impl", Path.Combine(AppContext.BaseDirectory, "AcPhys.Core.dll")]);
         Assert.True(run.Exit == 2, run.ToString());
-        Assert.Contains("has no public class implementing AcPhys.Spec.Adapters.ICellPhysics", run.Err, StringComparison.Ordinal);
+        Assert.Contains("has no public class implementing AcPhys.Contract.ICellPhysics", run.Err, StringComparison.Ordinal);
     }
 
     [Fact]

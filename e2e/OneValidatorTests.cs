@@ -1,6 +1,7 @@
+using AcPhys.Contract;
+using AcPhys.Formats.Corpus;
+using AcPhys.Formats.Scenes;
 using AcPhys.Protocol.Server;
-using AcPhys.Spec.Adapters;
-using AcPhys.Spec.Corpus;
 using AcPhys.Spec.Scenes;
 
 namespace AcPhys.E2E;

@@ -1,9 +1,9 @@
 using System.Text.RegularExpressions;
+using AcPhys.Contract;
 using AcPhys.E2E.Support;
 using AcPhys.Protocol.Client;
 using AcPhys.Protocol.Messages;
 using AcPhys.Protocol.Server;
-using AcPhys.Spec.Adapters;
 
 namespace AcPhys.E2E;
 

@@ -1,7 +1,7 @@
 using System.Numerics;
-using AcPhys.Spec.Dat;
+using AcPhys.Formats.Dat;
+using AcPhys.Formats.Scenes;
 using AcPhys.Spec.Generators;
-using AcPhys.Spec.Scenes;
 using FsCheck;
 using FsCheck.Fluent;
 

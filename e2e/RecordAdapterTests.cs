@@ -1,5 +1,5 @@
+using AcPhys.Contract;
 using AcPhys.E2E.Support;
-using AcPhys.Spec.Adapters;
 using AcPhys.Spec.Faults;
 
 namespace AcPhys.E2E;

@@ -1,6 +1,6 @@
+using AcPhys.Contract;
 using AcPhys.E2E.Support;
-using AcPhys.Spec.Adapters;
-using AcPhys.Spec.Corpus;
+using AcPhys.Formats.Corpus;
 
 namespace AcPhys.E2E;
 

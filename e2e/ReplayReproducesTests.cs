@@ -1,4 +1,5 @@
 using AcPhys.E2E.Support;
+using AcPhys.Formats.Corpus;
 using AcPhys.Fuzz.Targets;
 using AcPhys.Spec.Corpus;
 

@@ -1,8 +1,8 @@
 using System.Text.RegularExpressions;
 using AcPhys.E2E.Support;
-using AcPhys.Spec.Corpus;
-using AcPhys.Spec.Dat;
-using AcPhys.Spec.Scenes;
+using AcPhys.Formats.Corpus;
+using AcPhys.Formats.Dat;
+using AcPhys.Formats.Scenes;
 
 namespace AcPhys.E2E;
 

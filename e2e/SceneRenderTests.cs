@@ -3,7 +3,7 @@ using System.Numerics;
 using System.Text.Json.Nodes;
 using System.Xml.Linq;
 using AcPhys.E2E.Support;
-using AcPhys.Spec.Corpus;
+using AcPhys.Formats.Corpus;
 
 namespace AcPhys.E2E;
 

@@ -1,5 +1,5 @@
 using AcPhys.E2E.Support;
-using AcPhys.Spec.Corpus;
+using AcPhys.Formats.Corpus;
 
 namespace AcPhys.E2E;
 

@@ -1,11 +1,11 @@
 using System.Numerics;
+using AcPhys.Contract;
 using AcPhys.Core;
 using AcPhys.E2E.Support;
+using AcPhys.Formats.Corpus;
 using AcPhys.Protocol.Client;
 using AcPhys.Protocol.Messages;
-using AcPhys.Spec.Adapters;
 using AcPhys.Spec.Cases;
-using AcPhys.Spec.Corpus;
 
 namespace AcPhys.E2E;
 
@@ -137,7 +137,7 @@ public sealed class WalkWireTests
     }
 
     private static WalkRequest DatScene(WalkRequest walk, ProcessAdapter served) =>
-        walk.Scene is null || (served.Capabilities & Capability.DatRecords) == 0 ? walk : walk with { Scene = AcPhys.Spec.Dat.DatRoundTrip.Of(walk.Scene) };
+        walk.Scene is null || (served.Capabilities & Capability.DatRecords) == 0 ? walk : walk with { Scene = AcPhys.Formats.Dat.DatRoundTrip.Of(walk.Scene) };
 
     private static bool Same(FindCellResult a, FindCellResult b) =>
         a.Cells.SequenceEqual(b.Cells) && a.Containing == b.Containing && a.HitsInteriorCell == b.HitsInteriorCell

@@ -1,9 +1,10 @@
 using System.Numerics;
 using System.Text.Json;
+using AcPhys.Contract;
 using AcPhys.Core;
+using AcPhys.Formats.Scenes;
 using AcPhys.Protocol.Messages;
 using AcPhys.Protocol.Server;
-using AcPhys.Spec.Adapters;
 using AcPhys.Spec.Scenes;
 
 namespace AcPhys.E2E;

@@ -1,8 +1,8 @@
 using System.Text.Json;
+using AcPhys.Contract;
 using AcPhys.Core;
 using AcPhys.E2E.Support;
 using AcPhys.Protocol.Messages;
-using AcPhys.Spec.Adapters;
 
 namespace AcPhys.E2E;
 

@@ -1,8 +1,8 @@
-using AcPhys.Spec.Adapters;
-using AcPhys.Spec.Corpus;
+using AcPhys.Contract;
+using AcPhys.Formats.Corpus;
+using AcPhys.Formats.Values;
 using AcPhys.Spec.Invariants;
 using AcPhys.Spec.Running;
-using AcPhys.Spec.Values;
 
 namespace AcPhys.Xunit;
 

@@ -1,5 +1,5 @@
 using System.Collections.Concurrent;
-using AcPhys.Spec.Adapters;
+using AcPhys.Contract;
 
 namespace AcPhys.Xunit;
 

@@ -2,7 +2,7 @@ using System.CommandLine;
 using System.Diagnostics;
 using AcPhys.Cli.Diff;
 using AcPhys.Cli.Impl;
-using AcPhys.Spec.Adapters;
+using AcPhys.Contract;
 using AcPhys.Spec.Invariants;
 using AcPhys.Spec.Running;
 using Spectre.Console;
@@ -89,7 +89,7 @@ internal static class DiffCommand
             {
                 foreach (var check in checks)
                 {
-                    var seed = fixedSeed ?? Seed.Derive(Spec.Running.Profile.Pr.BaseSeed!.Value, check.Id);
+                    var seed = fixedSeed ?? Seed.Derive(AcPhys.Spec.Running.Profile.Pr.BaseSeed!.Value, check.Id);
                     results.Add(Transports.Streamed(impl, () => check.Run(impl, cases, seed))); // streamed, repeated where an answer differs (docs/protocol.md, "Pipelining")
                     advance(check.Id);
                 }

@@ -2,8 +2,8 @@ using System.CommandLine;
 using System.Runtime.InteropServices;
 using AcPhys.Cli.Fuzz;
 using AcPhys.Cli.Impl;
+using AcPhys.Formats.Corpus;
 using AcPhys.Fuzz.Targets;
-using AcPhys.Spec.Corpus;
 using AcPhys.Spec.Faults;
 
 namespace AcPhys.Cli.Commands;
@@ -105,7 +105,7 @@ internal static class FuzzCommand
             }
             if (!double.IsFinite(m) || m <= 0 || m > MaxMinutes || j < 1 || ms < 1)
             {
-                throw new UsageException($"--minutes (a number of minutes up to {MaxMinutes}), --jobs and --timeout-ms must be positive (got --minutes {Spec.Values.InputQuote.Line(m.ToString(System.Globalization.CultureInfo.InvariantCulture))})");
+                throw new UsageException($"--minutes (a number of minutes up to {MaxMinutes}), --jobs and --timeout-ms must be positive (got --minutes {AcPhys.Formats.Values.InputQuote.Line(m.ToString(System.Globalization.CultureInfo.InvariantCulture))})");
             }
 
             int maxJobs = Math.Max(1, Environment.ProcessorCount);
@@ -198,7 +198,7 @@ internal static class FuzzCommand
             return new Campaign(settings(), cts.Token).Run();
         }
         catch (Exception e) when (e is UsageException or CorpusFormatException or IOException or UnauthorizedAccessException
-            or Spec.Adapters.AdapterLoadException or Spec.Adapters.AdapterFailureException)
+            or AcPhys.Spec.Adapters.AdapterLoadException or AcPhys.Contract.AdapterFailureException)
         {
             Terminal.Error("fuzz", e.Message);
             return ExitCodes.ToolError;

@@ -1,8 +1,8 @@
 using System.CommandLine;
 using AcPhys.Cli.Render;
 using AcPhys.Cli.Replay;
-using AcPhys.Spec.Adapters;
-using AcPhys.Spec.Cases;
+using AcPhys.Contract;
+using AcPhys.Formats.Cases;
 using AcPhys.Spec.Faults;
 using AcPhys.Spec.Judging;
 

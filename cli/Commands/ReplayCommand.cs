@@ -1,8 +1,8 @@
 using System.CommandLine;
 using AcPhys.Cli.Impl;
 using AcPhys.Cli.Replay;
-using AcPhys.Spec.Adapters;
-using AcPhys.Spec.Dat;
+using AcPhys.Contract;
+using AcPhys.Formats.Dat;
 using AcPhys.Spec.Faults;
 
 namespace AcPhys.Cli.Commands;
@@ -98,7 +98,7 @@ internal static class ReplayCommand
     {
         public bool Any => Fault is not null || Pick is not null || Fidelity is not null;
 
-        public static CaseModeWords Of(AcPhys.Spec.Corpus.CaseMode? mode) =>
+        public static CaseModeWords Of(AcPhys.Formats.Corpus.CaseMode? mode) =>
             mode is null ? new(null, null, null) : new(mode.Fault, mode.Pick, mode.Fidelity.Count == 0 ? null : string.Join(',', mode.Fidelity));
 
         public (ICellPhysics Impl, PlantedFault? Fault) Reference()

@@ -1,8 +1,9 @@
 using System.CommandLine;
 using System.Text.Json;
-using AcPhys.Spec.Corpus;
-using AcPhys.Spec.Dat;
-using AcPhys.Spec.Scenes;
+using AcPhys.Contract;
+using AcPhys.Formats.Corpus;
+using AcPhys.Formats.Dat;
+using AcPhys.Formats.Scenes;
 
 namespace AcPhys.Cli.Commands;
 
@@ -97,7 +98,7 @@ internal static class SceneCommand
         var (manifest, scene) = DatFolder.Read(dir);
         bool walk = manifest is { Header: not null, Walk: not null };
         string text = walk
-            ? CorpusJson.Write(manifest.Header! with { SceneWalk = new Spec.Cases.SceneWalk(scene, manifest.Walk!) })
+            ? CorpusJson.Write(manifest.Header! with { SceneWalk = new AcPhys.Formats.Cases.SceneWalk(scene, manifest.Walk!) })
             : SceneJson.Write(scene);
         OutputPath.Write(output, text);
         Terminal.Line($"scene import: wrote {output} ({(walk ? "scene-walk corpus file" : "bare scene")}: {scene})");

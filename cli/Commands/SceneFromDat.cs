@@ -1,6 +1,6 @@
 using System.CommandLine;
-using AcPhys.Spec.Dat.Container;
-using AcPhys.Spec.Scenes;
+using AcPhys.Formats.Dat.Container;
+using AcPhys.Formats.Scenes;
 
 namespace AcPhys.Cli.Commands;
 
@@ -95,7 +95,7 @@ internal static class SceneFromDat
         using var world = OpenWorld(cell, portal, "--cell", "--portal");
         if (!world.Cell.Contains(SceneExtraction.LandblockRecordId(place.Block)))
         {
-            throw new UsageException($"--landblock {place.Block}: {cell} holds no Landblock record {Spec.Dat.RecordIds.Text(SceneExtraction.LandblockRecordId(place.Block))} ({world.Landblocks().Count()} landblocks in the file)");
+            throw new UsageException($"--landblock {place.Block}: {cell} holds no Landblock record {AcPhys.Formats.Dat.RecordIds.Text(SceneExtraction.LandblockRecordId(place.Block))} ({world.Landblocks().Count()} landblocks in the file)");
         }
 
         var got = SceneExtraction.Extract(world, place, maxCells);

@@ -1,7 +1,8 @@
 using System.CommandLine;
-using AcPhys.Spec.Corpus;
-using AcPhys.Spec.Dat.Container;
-using AcPhys.Spec.Scenes;
+using AcPhys.Contract;
+using AcPhys.Formats.Corpus;
+using AcPhys.Formats.Dat.Container;
+using AcPhys.Formats.Scenes;
 
 namespace AcPhys.Cli.Commands;
 

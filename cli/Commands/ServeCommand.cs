@@ -1,8 +1,8 @@
 using System.CommandLine;
 using System.Text;
+using AcPhys.Contract;
 using AcPhys.Protocol.Messages;
 using AcPhys.Protocol.Server;
-using AcPhys.Spec.Adapters;
 using AcPhys.Spec.Faults;
 
 namespace AcPhys.Cli.Commands;

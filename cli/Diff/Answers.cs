@@ -1,7 +1,7 @@
 using System.Diagnostics.CodeAnalysis;
+using AcPhys.Contract;
 using AcPhys.Core;
-using AcPhys.Spec.Adapters;
-using AcPhys.Spec.Cases;
+using AcPhys.Formats.Cases;
 
 namespace AcPhys.Cli.Diff;
 

@@ -1,9 +1,9 @@
+using AcPhys.Contract;
 using AcPhys.Core;
-using AcPhys.Spec.Adapters;
+using AcPhys.Formats.Cases;
+using AcPhys.Formats.Dat;
 using AcPhys.Spec.Cases;
-using AcPhys.Spec.Dat;
 using AcPhys.Spec.Invariants;
-using AcPhys.Spec.Scenes;
 
 namespace AcPhys.Cli.Diff;
 

@@ -2,7 +2,8 @@ using System.Globalization;
 using System.Text;
 using AcPhys.Cli.Impl;
 using AcPhys.Cli.Verify;
-using AcPhys.Spec.Adapters;
+using AcPhys.Contract;
+using AcPhys.Formats.Corpus;
 using AcPhys.Spec.Corpus;
 using AcPhys.Spec.Invariants;
 using Spectre.Console;
@@ -109,7 +110,7 @@ internal sealed class DiffReport(ICellPhysics impl, ICellPhysics reference, Impl
 
     private string? WriteFiles(DiffResult r, int n, DivergenceClass c, IReadOnlyList<(string Query, string Implementation, string Reference)> side, string replay)
     {
-        var violation = new Violation(r.Check.Id, $"D{n} {c.What}: {c.Message}", CaseText(c.Example)) { Case = Spec.Cases.AnyCase.Of(c.Example) };
+        var violation = new Violation(r.Check.Id, $"D{n} {c.What}: {c.Message}", CaseText(c.Example)) { Case = AcPhys.Formats.Cases.AnyCase.Of(c.Example) };
         string? caseFile = FailureFile.Write(violation, folder, FinderNames.Diff, r.Seed.ToString());
         string name = caseFile is null ? $"{r.Check.Id}-D{n}" : Path.GetFileNameWithoutExtension(caseFile);
         string sideFile = Path.Combine(folder, name + ".diff.md");

@@ -1,5 +1,5 @@
 using System.Diagnostics;
-using AcPhys.Spec.Adapters;
+using AcPhys.Contract;
 using AcPhys.Spec.Generators;
 using AcPhys.Spec.Running;
 

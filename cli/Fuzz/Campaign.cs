@@ -1,8 +1,8 @@
 using System.Globalization;
 using System.Text;
 using AcPhys.Cli.Impl;
+using AcPhys.Formats.Corpus;
 using AcPhys.Fuzz.Targets;
-using AcPhys.Spec.Corpus;
 
 namespace AcPhys.Cli.Fuzz;
 

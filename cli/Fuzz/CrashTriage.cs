@@ -1,5 +1,6 @@
 using System.Security.Cryptography;
 using AcPhys.Cli.Verify;
+using AcPhys.Formats.Corpus;
 using AcPhys.Fuzz.Targets;
 using AcPhys.Protocol.Client;
 using AcPhys.Spec.Corpus;
@@ -92,7 +93,7 @@ internal sealed class CrashTriage(FuzzSettings s, Subject subject)
         {
             return CaseReplay.Reproduces(entry, subject.Fresh());
         }
-        catch (Spec.Adapters.AdapterFailureException)
+        catch (AcPhys.Contract.AdapterFailureException)
         {
             subject.Discard();
             return false;

@@ -42,7 +42,7 @@ internal sealed record FuzzSettings(
     public bool InstrumentsOurs => Port.AssemblyPath is null;
 
     /// <summary>Gets how reports name the implementation under test.</summary>
-    public string Subject => Port.Command is { } c ? "--impl-cmd " + Spec.Values.InputQuote.Line(c, 80) : Port.AssemblyPath is { } a ? "--impl " + a : Fault is null ? "correct core" : "fault " + Fault;
+    public string Subject => Port.Command is { } c ? "--impl-cmd " + AcPhys.Formats.Values.InputQuote.Line(c, 80) : Port.AssemblyPath is { } a ? "--impl " + a : Fault is null ? "correct core" : "fault " + Fault;
 
     /// <summary>Gets a value indicating whether only the summary is printed (CI).</summary>
     public bool Quiet { get; init; }

@@ -3,7 +3,7 @@ using System.Reflection;
 using System.Security.Cryptography;
 using System.Text.RegularExpressions;
 using AcPhys.Cli.Verify;
-using AcPhys.Spec.Corpus;
+using AcPhys.Formats.Corpus;
 
 namespace AcPhys.Cli.Fuzz;
 

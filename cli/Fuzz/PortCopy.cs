@@ -42,7 +42,7 @@ internal static partial class PortCopy
 
                 if (Path.GetFileName(f) != f || !File.Exists(Path.Combine(dir, f)))
                 {
-                    throw new UsageException($"--instrument {Spec.Values.InputQuote.Line(f, 80)}: no such assembly beside the adapter in {dir}");
+                    throw new UsageException($"--instrument {AcPhys.Formats.Values.InputQuote.Line(f, 80)}: no such assembly beside the adapter in {dir}");
                 }
             }
 
@@ -111,8 +111,8 @@ internal static partial class PortCopy
             say("  " + line);
         }
 
-        Spec.Corpus.AtomicFile.WriteAllText(probesPath, probes.ToString(CultureInfo.InvariantCulture));
-        Spec.Corpus.AtomicFile.WriteAllText(stampPath, stamp); // last: a killed copy is made again next time
+        AcPhys.Formats.Corpus.AtomicFile.WriteAllText(probesPath, probes.ToString(CultureInfo.InvariantCulture));
+        AcPhys.Formats.Corpus.AtomicFile.WriteAllText(stampPath, stamp); // last: a killed copy is made again next time
         return (chosen, probes);
     }
 

@@ -1,3 +1,4 @@
+using AcPhys.Contract;
 using AcPhys.Spec.Adapters;
 
 namespace AcPhys.Cli.Impl;

@@ -1,7 +1,6 @@
 using System.Numerics;
+using AcPhys.Contract;
 using AcPhys.Core;
-using AcPhys.Spec.Adapters;
-using AcPhys.Spec.Scenes;
 
 namespace AcPhys.Cli.Impl;
 

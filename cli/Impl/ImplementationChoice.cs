@@ -1,6 +1,6 @@
 using System.Globalization;
+using AcPhys.Contract;
 using AcPhys.Protocol.Client;
-using AcPhys.Spec.Adapters;
 
 namespace AcPhys.Cli.Impl;
 

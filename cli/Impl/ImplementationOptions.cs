@@ -20,7 +20,7 @@ internal sealed class ImplementationOptions
     /// <summary>Gets <c>--impl</c>.</summary>
     public Option<string> Assembly { get; } = new("--impl")
     {
-        Description = "Test a .NET implementation in process: an assembly with one public class implementing AcPhys.Spec.Adapters.ICellPhysics.",
+        Description = "Test a .NET implementation in process: an assembly with one public class implementing AcPhys.Contract.ICellPhysics.",
         HelpName = "PATH.dll",
     };
 
@@ -63,7 +63,7 @@ internal sealed class ImplementationOptions
         {
             if (!double.TryParse(timeoutText, NumberStyles.Float, CultureInfo.InvariantCulture, out double seconds) || !(seconds >= MinTimeoutSeconds && seconds <= 3600))
             {
-                throw new UsageException($"malformed --timeout '{Spec.Values.InputQuote.Line(timeoutText)}': expected seconds, a number from {MinTimeoutSeconds} to 3600");
+                throw new UsageException($"malformed --timeout '{AcPhys.Formats.Values.InputQuote.Line(timeoutText)}': expected seconds, a number from {MinTimeoutSeconds} to 3600");
             }
 
             if (command is null && assembly is null)

@@ -1,6 +1,6 @@
+using AcPhys.Contract;
 using AcPhys.Core;
 using AcPhys.Protocol.Messages;
-using AcPhys.Spec.Adapters;
 
 namespace AcPhys.Cli.Impl;
 

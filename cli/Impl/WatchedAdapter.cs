@@ -1,8 +1,7 @@
 using System.Diagnostics;
 using System.Globalization;
+using AcPhys.Contract;
 using AcPhys.Core;
-using AcPhys.Spec.Adapters;
-using AcPhys.Spec.Scenes;
 
 namespace AcPhys.Cli.Impl;
 
@@ -59,7 +58,7 @@ internal sealed class WatchedAdapter : ICellPhysics, IDisposable
         {
             loaded = AdapterLoader.Load(path);
             probe.Enter("Name");
-            name = Spec.Values.InputQuote.Line(loaded.Name ?? Path.GetFileName(path), 120);
+            name = AcPhys.Formats.Values.InputQuote.Line(loaded.Name ?? Path.GetFileName(path), 120);
         }
         finally
         {

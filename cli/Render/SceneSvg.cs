@@ -1,6 +1,6 @@
 using System.Text;
 using AcPhys.Core;
-using AcPhys.Spec.Cases;
+using AcPhys.Formats.Cases;
 using AcPhys.Spec.Invariants;
 using AcPhys.Spec.Judging;
 using static AcPhys.Cli.Render.SvgText;

@@ -1,7 +1,7 @@
 using System.Globalization;
 using System.Text;
 using AcPhys.Core;
-using AcPhys.Spec.Cases;
+using AcPhys.Formats.Cases;
 using AcPhys.Spec.Invariants;
 using AcPhys.Spec.Judging;
 

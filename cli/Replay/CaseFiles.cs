@@ -1,5 +1,5 @@
-using AcPhys.Spec.Corpus;
-using AcPhys.Spec.Dat;
+using AcPhys.Formats.Corpus;
+using AcPhys.Formats.Dat;
 
 namespace AcPhys.Cli.Replay;
 

@@ -1,7 +1,7 @@
 using System.Globalization;
-using AcPhys.Spec.Adapters;
-using AcPhys.Spec.Cases;
-using AcPhys.Spec.Corpus;
+using AcPhys.Contract;
+using AcPhys.Formats.Cases;
+using AcPhys.Formats.Corpus;
 using AcPhys.Spec.Faults;
 using AcPhys.Spec.Judging;
 
@@ -27,7 +27,7 @@ internal static class ReplayPrinter
         Terminal.Line($"  kind {entry.Kind}, found by {entry.FoundBy}"
             + (entry.Invariant is null ? string.Empty : $", guards {entry.Invariant}")
             + (entry.Seed is null ? string.Empty : $", seed {entry.Seed}") + $", against {impl.Name} (pick {PickNames.Of(impl.Pick)})");
-        if (entry.Invariant is not null && Spec.Invariants.InvariantCatalogue.Find(entry.Invariant) is null)
+        if (entry.Invariant is not null && AcPhys.Spec.Invariants.InvariantCatalogue.Find(entry.Invariant) is null)
         {
             Terminal.Line($"  note: the entry guards '{entry.Invariant}', which is not in the catalogue (a diff check's id, or an older file): every judge of its kind is asked");
         }
@@ -51,8 +51,8 @@ internal static class ReplayPrinter
         }
 
         var verdicts = run.Judgement.Verdicts;
-        int holds = verdicts.Count(v => v.Outcome?.Verdict == Spec.Invariants.Verdict.Holds);
-        int vacuous = verdicts.Count(v => v.Outcome?.Verdict == Spec.Invariants.Verdict.Vacuous);
+        int holds = verdicts.Count(v => v.Outcome?.Verdict == AcPhys.Spec.Invariants.Verdict.Holds);
+        int vacuous = verdicts.Count(v => v.Outcome?.Verdict == AcPhys.Spec.Invariants.Verdict.Vacuous);
         int notTested = verdicts.Count(v => v.Outcome is null);
         var violated = run.Judgement.ViolatedIds;
         int caught = replay.Catches.Count(c => c.CaughtBy.Count > 0);

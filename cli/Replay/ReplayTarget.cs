@@ -1,4 +1,4 @@
-using AcPhys.Spec.Adapters;
+using AcPhys.Contract;
 using AcPhys.Spec.Faults;
 
 namespace AcPhys.Cli.Replay;

@@ -1,4 +1,4 @@
-using AcPhys.Spec.Numerics;
+using AcPhys.Studies.Numerics;
 using static AcPhys.Cli.Tradeoffs.Markdown;
 
 namespace AcPhys.Cli.Tradeoffs;

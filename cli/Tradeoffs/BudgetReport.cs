@@ -1,8 +1,9 @@
 using System.Globalization;
 using System.Text;
-using AcPhys.Spec.Corpus;
+using AcPhys.Formats.Corpus;
 using AcPhys.Spec.Faults;
 using AcPhys.Spec.Running;
+using AcPhys.Studies.Running;
 using static AcPhys.Cli.Tradeoffs.Markdown;
 
 namespace AcPhys.Cli.Tradeoffs;

@@ -1,6 +1,6 @@
+using AcPhys.Contract;
 using AcPhys.Core;
-using AcPhys.Spec.Adapters;
-using AcPhys.Spec.Numerics;
+using AcPhys.Studies.Numerics;
 using static AcPhys.Cli.Tradeoffs.Markdown;
 
 namespace AcPhys.Cli.Tradeoffs;

@@ -1,9 +1,9 @@
 using System.CommandLine;
 using System.Globalization;
 using AcPhys.Cli.Commands;
+using AcPhys.Contract;
 using AcPhys.Core;
-using AcPhys.Spec.Adapters;
-using AcPhys.Spec.Dat.Container;
+using AcPhys.Formats.Dat.Container;
 using AcPhys.Spec.Running;
 
 namespace AcPhys.Cli.Verify;

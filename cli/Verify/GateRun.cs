@@ -42,7 +42,7 @@ internal sealed record GateRun(string ImplName, VerifySettings Settings, IReadOn
         + (UnknownOps.Count > 0 ? $" (the implementation announced unknown ops: {UnknownOpsText})" : string.Empty);
 
     /// <summary>Gets the unknown op names, escaped and quoted.</summary>
-    public string UnknownOpsText => string.Join(", ", UnknownOps.Take(20).Select(o => "\"" + Spec.Values.InputQuote.Line(o, 64) + "\"")) + (UnknownOps.Count > 20 ? $" and {UnknownOps.Count - 20} more" : string.Empty);
+    public string UnknownOpsText => string.Join(", ", UnknownOps.Take(20).Select(o => "\"" + AcPhys.Formats.Values.InputQuote.Line(o, 64) + "\"")) + (UnknownOps.Count > 20 ? $" and {UnknownOps.Count - 20} more" : string.Empty);
 
     /// <summary>Gets the seed text of the run: the fixed seed, or the base seed.</summary>
     public string SeedText => Settings.FixedSeed is Seed s ? "seed " + s : "base seed " + Fmt.Decimal(Settings.BaseSeed);

@@ -158,7 +158,7 @@ internal static class JunitReport
     }
 
     // Every text of a report passes here: an implementation's control characters never reach (or break) the XML (issue 28).
-    private static string X(string text) => Spec.Values.InputQuote.Escape(text, keepLines: true);
+    private static string X(string text) => AcPhys.Formats.Values.InputQuote.Escape(text, keepLines: true);
 
     private static void Property(XmlWriter xml, string name, string value)
     {

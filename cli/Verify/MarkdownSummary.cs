@@ -33,7 +33,7 @@ internal static class MarkdownSummary
         {
             string cases = r.Status == ResultStatus.NotTested ? "-" : r.ExhaustiveCases > 0 ? $"{Fmt.Count(r.Cases)} + {Fmt.Count(r.ExhaustiveCases)}" : Fmt.Count(r.Cases);
             string applicable = r.Status == ResultStatus.NotTested ? "-" : Fmt.Percent(r.Applicable, r.Cases);
-            md.Append($"| `{r.Invariant.Id}` | {(r.Invariant.Scope is { } scope ? Spec.Invariants.InvariantScope.Name(scope) : "-")} | {Verdict(r.Status)} | {cases} | {applicable} | {Fmt.Seconds(r.Elapsed)} |\n");
+            md.Append($"| `{r.Invariant.Id}` | {(r.Invariant.Scope is { } scope ? AcPhys.Spec.Invariants.InvariantScope.Name(scope) : "-")} | {Verdict(r.Status)} | {cases} | {applicable} | {Fmt.Seconds(r.Elapsed)} |\n");
         }
 
         FindingsText.Append(md, run.Results);
@@ -44,7 +44,7 @@ internal static class MarkdownSummary
             md.Append(r.Invariant.Statement).Append("\n\n");
             if (r.Violation is { } v)
             {
-                bool walk = v.CaseText.Contains('\n', StringComparison.Ordinal) || v.Case is Spec.Cases.AnyCase.OutdoorWalk;
+                bool walk = v.CaseText.Contains('\n', StringComparison.Ordinal) || v.Case is AcPhys.Formats.Cases.AnyCase.OutdoorWalk;
                 md.Append(walk ? "Minimised walk:\n\n" : "Minimised case:\n\n");
                 Fence(md, v.CaseText);
                 md.Append("Message: ").Append(Inline(v.Message)).Append("\n\n");
@@ -81,7 +81,7 @@ internal static class MarkdownSummary
             md.Append("\n</details>\n");
         }
 
-        return Spec.Values.InputQuote.Escape(md.ToString(), keepLines: true); // no control character of an implementation reaches the PR comment
+        return AcPhys.Formats.Values.InputQuote.Escape(md.ToString(), keepLines: true); // no control character of an implementation reaches the PR comment
     }
 
     private static string Verdict(ResultStatus status) => status switch

@@ -1,8 +1,9 @@
+using AcPhys.Contract;
+using AcPhys.Formats.Cases;
+using AcPhys.Formats.Corpus;
 using AcPhys.Protocol.Client;
 using AcPhys.Protocol.Messages;
-using AcPhys.Spec.Adapters;
 using AcPhys.Spec.Cases;
-using AcPhys.Spec.Corpus;
 using AcPhys.Spec.Invariants;
 using AcPhys.Spec.Running;
 using Spectre.Console;
@@ -215,10 +216,10 @@ internal sealed class VerifyReport(VerifySettings settings, ICellPhysics impl)
         }
 
         // Retail statements and hardening rules kept apart (issue #18): a port that matches retail may fail only the latter.
-        Terminal.Line("by scope: " + string.Join("; ", new[] { Spec.Invariants.Scope.Retail, Spec.Invariants.Scope.Hardening }.Select(scope =>
+        Terminal.Line("by scope: " + string.Join("; ", new[] { AcPhys.Spec.Invariants.Scope.Retail, AcPhys.Spec.Invariants.Scope.Hardening }.Select(scope =>
         {
             var mine = results.Where(r => r.Invariant.Scope == scope).ToArray();
-            return $"{Spec.Invariants.InvariantScope.Name(scope)} {mine.Count(r => r.Status == ResultStatus.Passed)} passed, {mine.Count(r => r.Status == ResultStatus.Failed)} failed, {mine.Count(r => r.Status == ResultStatus.NotTested)} not tested";
+            return $"{AcPhys.Spec.Invariants.InvariantScope.Name(scope)} {mine.Count(r => r.Status == ResultStatus.Passed)} passed, {mine.Count(r => r.Status == ResultStatus.Failed)} failed, {mine.Count(r => r.Status == ResultStatus.NotTested)} not tested";
         })));
         Terminal.Line($"verify: {results.Count} invariant{(results.Count == 1 ? string.Empty : "s")}, {passed} passed, {failed} failed, {notTested} not tested ({string.Join(", ", details)})");
     }

@@ -42,8 +42,8 @@ internal sealed record VerifySettings
     public (AcPhys.Core.IndoorFidelity Indoor, AcPhys.Core.OutdoorFidelity Outdoor) Fidelity { get; init; }
 
     /// <summary>Gets the mode of the bundled reference as a case file stores it and a replay line chooses it again (issue 41).</summary>
-    public Spec.Corpus.CaseMode Mode => new(
-        Pick == AcPhys.Core.PickPolicy.CurrentFirst ? Spec.Adapters.PickNames.Of(Pick) : null,
+    public AcPhys.Formats.Corpus.CaseMode Mode => new(
+        Pick == AcPhys.Core.PickPolicy.CurrentFirst ? AcPhys.Contract.PickNames.Of(Pick) : null,
         Impl.ReferenceChoice.FidelityWords(Fidelity),
         Fault?.Id);
 
@@ -54,7 +54,7 @@ internal sealed record VerifySettings
     public int? CasesOverride { get; init; }
 
     /// <summary>Gets how many failure classes each failing invariant searches for (<c>--max-classes</c>).</summary>
-    public int MaxClasses { get; init; } = Spec.Running.CatalogueRunner.MaxClasses;
+    public int MaxClasses { get; init; } = AcPhys.Spec.Running.CatalogueRunner.MaxClasses;
 
     /// <summary>Gets the JUnit XML file to write (<c>--junit</c>), if any.</summary>
     public string? JunitPath { get; init; }
@@ -83,7 +83,7 @@ internal sealed record VerifySettings
     /// <exception cref="UsageException">A value is unknown or malformed.</exception>
     public static VerifySettings Parse(string? profileName, string[]? only, string? seed, string? baseSeed, string? fault, string[]? except = null, string? scope = null)
     {
-        var profile = Spec.Running.Profile.Find(profileName ?? "pr")
+        var profile = AcPhys.Spec.Running.Profile.Find(profileName ?? "pr")
             ?? throw new UsageException($"unknown profile '{profileName}' (known: pr, nightly; the default comes from ACPHYS_PROFILE when set)");
 
         Seed? fixedSeed = null;

@@ -1,4 +1,4 @@
-namespace AcPhys.Spec.Adapters;
+namespace AcPhys.Contract;
 
 /// <summary>
 /// Thrown by an adapter when the implementation behind it cannot answer at all (it crashed, hung past its timeout,

@@ -1,6 +1,6 @@
 using AcPhys.Core;
 
-namespace AcPhys.Spec.Adapters;
+namespace AcPhys.Contract;
 
 /// <summary>The outcome of <c>adjust_to_outside</c>: success flag, the re-seated id and the (snapped, re-based) x, y.</summary>
 /// <param name="Ok">True when the point was re-seated to a land cell.</param>

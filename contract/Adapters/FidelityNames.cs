@@ -1,6 +1,6 @@
 using AcPhys.Core;
 
-namespace AcPhys.Spec.Adapters;
+namespace AcPhys.Contract;
 
 /// <summary>
 /// Protocol names of the documented deviations an implementation may declare in <c>hello</c> (<c>"fidelity"</c>, docs/protocol.md):

@@ -1,7 +1,6 @@
 using AcPhys.Core;
-using AcPhys.Spec.Scenes;
 
-namespace AcPhys.Spec.Adapters;
+namespace AcPhys.Contract;
 
 /// <summary>
 /// The adapter contract: what an implementation under test offers. A partial implementation announces what it

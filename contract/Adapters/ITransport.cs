@@ -1,4 +1,4 @@
-namespace AcPhys.Spec.Adapters;
+namespace AcPhys.Contract;
 
 /// <summary>
 /// What a transport between the tool and an implementation negotiated beyond the operations the implementation states

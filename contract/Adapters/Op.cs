@@ -1,4 +1,4 @@
-namespace AcPhys.Spec.Adapters;
+namespace AcPhys.Contract;
 
 /// <summary>The operations an implementation under test may offer (physics only; a transport negotiates the rest, <see cref="ITransport"/>); names match protocol v1 (docs/protocol.md).</summary>
 [Flags]

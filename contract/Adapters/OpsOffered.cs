@@ -1,8 +1,7 @@
 using System.Numerics;
 using AcPhys.Core;
-using AcPhys.Spec.Scenes;
 
-namespace AcPhys.Spec.Adapters;
+namespace AcPhys.Contract;
 
 /// <summary>
 /// An implementation offered with fewer operations than it has (<c>acphys serve --ops</c>), or declaring another mode:

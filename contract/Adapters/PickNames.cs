@@ -1,6 +1,6 @@
 using AcPhys.Core;
 
-namespace AcPhys.Spec.Adapters;
+namespace AcPhys.Contract;
 
 /// <summary>Protocol names of pick policies: <c>retail</c> and <c>current-first</c>.</summary>
 public static class PickNames

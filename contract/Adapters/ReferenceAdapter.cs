@@ -1,7 +1,6 @@
 using AcPhys.Core;
-using AcPhys.Spec.Scenes;
 
-namespace AcPhys.Spec.Adapters;
+namespace AcPhys.Contract;
 
 /// <summary>The bundled reference core (AcPhys.Core) behind the adapter contract.</summary>
 /// <param name="pick">The pick policy to declare and use.</param>

@@ -1,4 +1,4 @@
-namespace AcPhys.Spec.Adapters;
+namespace AcPhys.Contract;
 
 /// <summary>
 /// The two kinds of scene query a port may offer, alone or both (issue #29): static placement

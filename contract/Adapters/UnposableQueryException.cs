@@ -1,4 +1,4 @@
-namespace AcPhys.Spec.Adapters;
+namespace AcPhys.Contract;
 
 /// <summary>
 /// A query the tool cannot put to an implementation exactly in the form it asked for (a world-frame port, issue #29:

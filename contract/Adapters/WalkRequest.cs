@@ -1,8 +1,7 @@
 using System.Numerics;
 using AcPhys.Core;
-using AcPhys.Spec.Scenes;
 
-namespace AcPhys.Spec.Adapters;
+namespace AcPhys.Contract;
 
 /// <summary>
 /// A whole walk asked at once (<see cref="ICellPhysics.FindCellWalk"/>, protocol op <c>find_cell_walk</c>): where it

@@ -1,7 +1,7 @@
 using System.Numerics;
 using AcPhys.Core;
 
-namespace AcPhys.Spec.Adapters;
+namespace AcPhys.Contract;
 
 /// <summary>
 /// The rule a walk is threaded by, as a client threads it (the contract of <c>find_cell_walk</c>, docs/protocol.md):

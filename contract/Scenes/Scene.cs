@@ -1,7 +1,7 @@
 using System.Numerics;
 using AcPhys.Core;
 
-namespace AcPhys.Spec.Scenes;
+namespace AcPhys.Contract;
 
 /// <summary>A convex piece of a cell: an axis-aligned box or a list of inner half-spaces, in the cell's local frame.</summary>
 /// <param name="Box">The box, or null when <paramref name="Planes"/> is given.</param>

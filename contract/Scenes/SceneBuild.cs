@@ -1,7 +1,7 @@
 using System.Runtime.CompilerServices;
 using AcPhys.Core;
 
-namespace AcPhys.Spec.Scenes;
+namespace AcPhys.Contract;
 
 /// <summary>Turns a validated scene description into the core's <see cref="CellScene"/>, cached per scene instance and mode.</summary>
 public static class SceneBuild

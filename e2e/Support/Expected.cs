@@ -1,5 +1,5 @@
+using AcPhys.Contract;
 using AcPhys.Core;
-using AcPhys.Spec.Adapters;
 using AcPhys.Spec.Invariants;
 
 namespace AcPhys.E2E.Support;

@@ -1,4 +1,4 @@
-namespace AcPhys.Spec.Cases;
+namespace AcPhys.Formats.Cases;
 
 /// <summary>
 /// One case of any kind, as runners report it, files store it and the judge (<c>Judges</c>) judges it: a
@@ -16,7 +16,7 @@ public abstract record AnyCase
     /// <summary>Gets the kind (the corpus file's <c>kind</c>).</summary>
     public abstract CaseKind Kind { get; }
 
-    /// <summary>Gets the case value itself (a <see cref="LandCase"/>, <see cref="OutdoorCase"/>, <see cref="Cases.Walk"/>, <see cref="Cases.SceneWalk"/> or <see cref="PartsCase"/>).</summary>
+    /// <summary>Gets the case value itself (a <see cref="LandCase"/>, <see cref="OutdoorCase"/>, <see cref="AcPhys.Formats.Cases.Walk"/>, <see cref="AcPhys.Formats.Cases.SceneWalk"/> or <see cref="PartsCase"/>).</summary>
     public abstract object Value { get; }
 
     /// <summary>Calls the function of this case's kind (the compiler checks every kind is handled).</summary>

@@ -1,4 +1,4 @@
-namespace AcPhys.Spec.Cases;
+namespace AcPhys.Formats.Cases;
 
 /// <summary>A walk of either kind: on open land (<see cref="Walk"/>) or in a scene (<see cref="SceneWalk"/>); exactly one is set.</summary>
 /// <param name="Outdoor">The open-land walk, or null.</param>

@@ -1,4 +1,4 @@
-namespace AcPhys.Spec.Cases;
+namespace AcPhys.Formats.Cases;
 
 /// <summary>The kinds of case (<see cref="AnyCase"/>); each has one codec and one set of judges (<c>Judges</c>).</summary>
 public enum CaseKind

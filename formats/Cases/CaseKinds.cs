@@ -1,4 +1,4 @@
-namespace AcPhys.Spec.Cases;
+namespace AcPhys.Formats.Cases;
 
 /// <summary>
 /// The one switch over <see cref="CaseKind"/>: code that needs a value per kind names one for every kind here, so a new

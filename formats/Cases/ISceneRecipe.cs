@@ -1,4 +1,4 @@
-namespace AcPhys.Spec.Cases;
+namespace AcPhys.Formats.Cases;
 
 /// <summary>
 /// What a generated scene walk was built from, as the case values see it: the engine's recipe (its generators and

@@ -1,7 +1,7 @@
 using System.Globalization;
 using AcPhys.Core;
 
-namespace AcPhys.Spec.Cases;
+namespace AcPhys.Formats.Cases;
 
 /// <summary>
 /// One input to the LandDefs invariants: a cell id, a block-frame point (x, y) in that id's block, and an lcoord.

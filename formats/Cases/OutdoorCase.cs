@@ -2,7 +2,7 @@ using System.Globalization;
 using System.Numerics;
 using AcPhys.Core;
 
-namespace AcPhys.Spec.Cases;
+namespace AcPhys.Formats.Cases;
 
 /// <summary>One outdoor query: a position's cell id and sphere centres in that cell's block frame (facts §0, §3.3).</summary>
 /// <param name="Cell">The position's cell id.</param>

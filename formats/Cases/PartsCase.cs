@@ -1,6 +1,6 @@
 using AcPhys.Core;
 
-namespace AcPhys.Spec.Cases;
+namespace AcPhys.Formats.Cases;
 
 /// <summary>One parts / bounding-box query (facts §3.4): the object's parts, the first being the anchor.</summary>
 /// <param name="Parts">The parts.</param>

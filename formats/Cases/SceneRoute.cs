@@ -1,4 +1,4 @@
-namespace AcPhys.Spec.Cases;
+namespace AcPhys.Formats.Cases;
 
 /// <summary>The route a generated scene walk takes.</summary>
 public enum SceneRoute

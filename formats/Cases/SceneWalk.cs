@@ -1,6 +1,6 @@
-using AcPhys.Spec.Scenes;
+using AcPhys.Contract;
 
-namespace AcPhys.Spec.Cases;
+namespace AcPhys.Formats.Cases;
 
 /// <summary>
 /// A walk in a scene: the scene, the walk (start cell may be an env cell), and — for generated cases — the recipe it

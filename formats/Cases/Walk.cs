@@ -1,7 +1,7 @@
 using System.Numerics;
 using AcPhys.Core;
 
-namespace AcPhys.Spec.Cases;
+namespace AcPhys.Formats.Cases;
 
 /// <summary>A sphere of a moving body: offset from the body's position, and radius.</summary>
 /// <param name="Offset">Offset from the position, metres.</param>

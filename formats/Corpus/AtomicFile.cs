@@ -1,6 +1,6 @@
 using System.Text;
 
-namespace AcPhys.Spec.Corpus;
+namespace AcPhys.Formats.Corpus;
 
 /// <summary>
 /// Writes files so that a killed process never leaves a half-written one: temp file in the same folder, flush to disk,

@@ -1,4 +1,4 @@
-namespace AcPhys.Spec.Corpus;
+namespace AcPhys.Formats.Corpus;
 
 /// <summary>
 /// The mode the bundled reference ran in when a case was found (issue 41, "replay carries the mode"): the pick, the

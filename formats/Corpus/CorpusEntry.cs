@@ -1,6 +1,6 @@
-using AcPhys.Spec.Cases;
+using AcPhys.Formats.Cases;
 
-namespace AcPhys.Spec.Corpus;
+namespace AcPhys.Formats.Corpus;
 
 /// <summary>
 /// One stored case: a seed or a minimised regression. Replayed on every test run: every invariant must hold on it

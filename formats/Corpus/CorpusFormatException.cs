@@ -1,4 +1,4 @@
-namespace AcPhys.Spec.Corpus;
+namespace AcPhys.Formats.Corpus;
 
 /// <summary>A corpus (or other input) file that is not valid: the message names the file, the JSON path and what is wrong.</summary>
 public sealed class CorpusFormatException : Exception

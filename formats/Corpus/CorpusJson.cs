@@ -2,9 +2,9 @@ using System.Text;
 using System.Text.Json;
 using AcPhys.Core;
 using AcPhys.Core.Text;
-using AcPhys.Spec.Cases;
+using AcPhys.Formats.Cases;
 
-namespace AcPhys.Spec.Corpus;
+namespace AcPhys.Formats.Corpus;
 
 /// <summary>
 /// Reads and writes corpus files (docs/corpus-format.md): readable JSON, hex cell ids, float32 values printed so
@@ -70,7 +70,7 @@ public static class CorpusJson
             else if (entry.SceneWalk is { } sw)
             {
                 w.WritePropertyName("scene");
-                Scenes.SceneJson.WriteValue(w, sw.Scene);
+                AcPhys.Formats.Scenes.SceneJson.WriteValue(w, sw.Scene);
                 WalkJson.Write(w, sw.Walk);
                 if (sw.Route == SceneRoute.EnterAndBack)
                 {
@@ -148,7 +148,7 @@ public static class CorpusJson
             if (root.TryGetProperty("catches", out var c))
             {
                 Require(c.ValueKind == JsonValueKind.Array, source, "$.catches", "expected an array of fault ids");
-                Refuse(Values.CatchList.Problem(c.GetArrayLength()), source, "$.catches");
+                Refuse(AcPhys.Formats.Values.CatchList.Problem(c.GetArrayLength()), source, "$.catches");
                 int i = 0;
                 foreach (var item in c.EnumerateArray())
                 {
@@ -162,12 +162,12 @@ public static class CorpusJson
             var header = new CorpusEntry { Title = title, Invariant = invariant, FoundBy = foundBy, Seed = seed, Mode = mode, Catches = catches };
             if (kind == "scene-walk")
             {
-                Scenes.Scene scene;
+                AcPhys.Contract.Scene scene;
                 try
                 {
-                    scene = Scenes.SceneJson.Read(Prop(root, "scene", source), source, "$.scene");
+                    scene = AcPhys.Formats.Scenes.SceneJson.Read(Prop(root, "scene", source), source, "$.scene");
                 }
-                catch (Scenes.SceneFormatException e)
+                catch (AcPhys.Formats.Scenes.SceneFormatException e)
                 {
                     throw new CorpusFormatException(e.Message, e);
                 }
@@ -175,7 +175,7 @@ public static class CorpusJson
                 string? route = OptStr(root, "route", source);
                 Require(route is null or EnterAndBack, source, "$.route", $"expected \"{EnterAndBack}\" (the only route a stored scene walk names)");
                 var sceneWalk = WalkJson.Read(Prop(root, "walk", source), source);
-                Refuse(Values.SceneWalkStart.Problem(scene, sceneWalk.StartCell), source, "$.walk.start.cell");
+                Refuse(AcPhys.Formats.Values.SceneWalkStart.Problem(scene, sceneWalk.StartCell), source, "$.walk.start.cell");
                 return header with { SceneWalk = new SceneWalk(scene, sceneWalk) { Route = route is null ? null : SceneRoute.EnterAndBack } };
             }
 
@@ -197,7 +197,7 @@ public static class CorpusJson
             var caseElement = Prop(root, "case", source);
             Require(caseElement.ValueKind == JsonValueKind.Object, source, "$.case", "expected an object");
             string cellText = Str(caseElement, "cell", source, "$.case");
-            Require(CellIdText.TryParse(cellText, out var cell), source, "$.case.cell", $"expected \"0x\" and 8 hex digits, got \"{Values.InputQuote.Brief(cellText)}\"");
+            Require(CellIdText.TryParse(cellText, out var cell), source, "$.case.cell", $"expected \"0x\" and 8 hex digits, got \"{AcPhys.Formats.Values.InputQuote.Brief(cellText)}\"");
             float x = Float(caseElement, "x", source);
             float y = Float(caseElement, "y", source);
             var lc = Prop(caseElement, "lcoord", source, "$.case");
@@ -263,11 +263,11 @@ public static class CorpusJson
         Require(m.ValueKind == JsonValueKind.Object, source, "$.mode", "expected an object with \"pick\", \"fidelity\" and \"fault\", each optional");
         foreach (var property in m.EnumerateObject())
         {
-            Require(property.Name is "pick" or "fidelity" or "fault", source, "$.mode." + Values.InputQuote.Brief(property.Name), "unknown field (known: pick, fidelity, fault)");
+            Require(property.Name is "pick" or "fidelity" or "fault", source, "$.mode." + AcPhys.Formats.Values.InputQuote.Brief(property.Name), "unknown field (known: pick, fidelity, fault)");
         }
 
         string? pick = OptStr(m, "pick", source, "$.mode");
-        Require(pick is null || (Adapters.PickNames.TryParse(pick, out var policy) && policy == PickPolicy.CurrentFirst), source, "$.mode.pick", "expected \"current-first\" (retail is the default and is not stored)");
+        Require(pick is null || (AcPhys.Contract.PickNames.TryParse(pick, out var policy) && policy == PickPolicy.CurrentFirst), source, "$.mode.pick", "expected \"current-first\" (retail is the default and is not stored)");
         var names = new List<string>();
         if (m.TryGetProperty("fidelity", out var f))
         {
@@ -280,7 +280,7 @@ public static class CorpusJson
                 i++;
             }
 
-            Require(Adapters.FidelityNames.TryParse(names, out _, out _, out string? unknown), source, "$.mode.fidelity", $"unknown deviation \"{Values.InputQuote.Brief(unknown ?? string.Empty)}\" (known: {string.Join(", ", Adapters.FidelityNames.Known)})");
+            Require(AcPhys.Contract.FidelityNames.TryParse(names, out _, out _, out string? unknown), source, "$.mode.fidelity", $"unknown deviation \"{AcPhys.Formats.Values.InputQuote.Brief(unknown ?? string.Empty)}\" (known: {string.Join(", ", AcPhys.Contract.FidelityNames.Known)})");
         }
 
         string? fault = OptStr(m, "fault", source, "$.mode");
@@ -316,7 +316,7 @@ public static class CorpusJson
     internal static float Float(JsonElement parent, string name, string source, string at = "$.case")
     {
         var e = Prop(parent, name, source, at);
-        _ = Values.Float32Json.TryRead(e, nonFiniteNames: true, out float f, out string? problem);
+        _ = AcPhys.Formats.Values.Float32Json.TryRead(e, nonFiniteNames: true, out float f, out string? problem);
         Refuse(problem, source, at + "." + name);
         return f;
     }

@@ -1,4 +1,4 @@
-namespace AcPhys.Spec.Corpus;
+namespace AcPhys.Formats.Corpus;
 
 /// <summary>What found a stored case (a corpus entry's <c>foundBy</c>): the one list every reader checks against.</summary>
 public static class FinderNames

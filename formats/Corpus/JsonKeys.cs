@@ -1,6 +1,6 @@
 using System.Text.Json;
 
-namespace AcPhys.Spec.Corpus;
+namespace AcPhys.Formats.Corpus;
 
 /// <summary>
 /// Finds a key given twice in one JSON object. System.Text.Json keeps the last silently, so a duplicated <c>kind</c> once
@@ -17,7 +17,7 @@ public static class JsonKeys
     /// <param name="path">The key's JSON path.</param>
     /// <returns>E.g. <c>$.walk.kind: duplicate key "kind" (each key once per object)</c>.</returns>
     public static string Message(string path) =>
-        $"{path}: duplicate key \"{Values.InputQuote.Brief(path[(path.LastIndexOf('.') + 1)..])}\" (each key once per object)";
+        $"{path}: duplicate key \"{AcPhys.Formats.Values.InputQuote.Brief(path[(path.LastIndexOf('.') + 1)..])}\" (each key once per object)";
 
     private static string? Find(JsonElement element, string path)
     {

@@ -2,9 +2,9 @@ using System.Numerics;
 using System.Text.Json;
 using AcPhys.Core;
 using AcPhys.Core.Text;
-using AcPhys.Spec.Cases;
+using AcPhys.Formats.Cases;
 
-namespace AcPhys.Spec.Corpus;
+namespace AcPhys.Formats.Corpus;
 
 /// <summary>
 /// The <c>parts</c> array of a corpus file of kind <c>parts</c> (docs/corpus-format.md): one object per part, the
@@ -14,7 +14,7 @@ namespace AcPhys.Spec.Corpus;
 public static class PartsJson
 {
     /// <summary>Largest number of parts a file may hold (bounded input).</summary>
-    public const int MaxParts = Values.PartBounds.MaxParts;
+    public const int MaxParts = AcPhys.Formats.Values.PartBounds.MaxParts;
 
     /// <summary>Writes the query as the property <c>parts</c>.</summary>
     /// <param name="w">The writer, inside the entry object.</param>
@@ -60,7 +60,7 @@ public static class PartsJson
             string at = $"$.parts[{i}]";
             CorpusJson.Require(p.ValueKind == JsonValueKind.Object, source, at, "expected an object");
             string cellText = CorpusJson.Str(p, "cell", source, at);
-            CorpusJson.Require(CellIdText.TryParse(cellText, out var cell), source, at + ".cell", $"expected \"0x\" and 8 hex digits, got \"{Values.InputQuote.Brief(cellText)}\"");
+            CorpusJson.Require(CellIdText.TryParse(cellText, out var cell), source, at + ".cell", $"expected \"0x\" and 8 hex digits, got \"{AcPhys.Formats.Values.InputQuote.Brief(cellText)}\"");
             var origin = ReadVector(p, "origin", source, at);
             var r = Obj(p, "rotation", source, at);
             var rotation = new Quaternion(Finite(r, "x", source, at + ".rotation"), Finite(r, "y", source, at + ".rotation"), Finite(r, "z", source, at + ".rotation"), Finite(r, "w", source, at + ".rotation"));
@@ -69,11 +69,11 @@ public static class PartsJson
             var max = ReadVector(p, "max", source, at);
             CorpusJson.Require(min.X <= max.X && min.Y <= max.Y && min.Z <= max.Z, source, at + ".min", "every component must be ≤ the same component of max");
             float radius = CorpusJson.Float(p, "radius", source, at);
-            CorpusJson.Refuse(Values.SphereRadius.Problem(radius), source, at + ".radius");
+            CorpusJson.Refuse(AcPhys.Formats.Values.SphereRadius.Problem(radius), source, at + ".radius");
             var flag = CorpusJson.Prop(p, "always2d", source, at);
             CorpusJson.Require(flag.ValueKind is JsonValueKind.True or JsonValueKind.False, source, at + ".always2d", "expected true or false");
             var part = new Part(cell, new Frame(origin, rotation), new Box(min, max), radius, flag.GetBoolean());
-            if (Values.PartBounds.Problem(part, parts.Count == 0 ? part : parts[0]) is var (field, problem))
+            if (AcPhys.Formats.Values.PartBounds.Problem(part, parts.Count == 0 ? part : parts[0]) is var (field, problem))
             {
                 CorpusJson.Refuse(problem, source, at + "." + field);
             }

@@ -2,9 +2,9 @@ using System.Numerics;
 using System.Text.Json;
 using AcPhys.Core;
 using AcPhys.Core.Text;
-using AcPhys.Spec.Cases;
+using AcPhys.Formats.Cases;
 
-namespace AcPhys.Spec.Corpus;
+namespace AcPhys.Formats.Corpus;
 
 /// <summary>
 /// The <c>query</c> member of a corpus entry of kind <c>query</c>: one open-land query (<see cref="OutdoorCase"/>) exactly
@@ -44,7 +44,7 @@ public static class QueryJson
     {
         CorpusJson.Require(e.ValueKind == JsonValueKind.Object, source, "$.query", "expected an object");
         string cellText = CorpusJson.Str(e, "cell", source, "$.query");
-        CorpusJson.Require(CellIdText.TryParse(cellText, out var cell), source, "$.query.cell", $"expected \"0x\" and 8 hex digits, got \"{Values.InputQuote.Brief(cellText)}\"");
+        CorpusJson.Require(CellIdText.TryParse(cellText, out var cell), source, "$.query.cell", $"expected \"0x\" and 8 hex digits, got \"{AcPhys.Formats.Values.InputQuote.Brief(cellText)}\"");
         var origin = CorpusJson.Prop(e, "origin", source, "$.query");
         CorpusJson.Require(origin.ValueKind == JsonValueKind.Object, source, "$.query.origin", "expected an object");
         var at = new Vector3(
@@ -53,7 +53,7 @@ public static class QueryJson
             CorpusJson.Float(origin, "z", source, "$.query.origin"));
         var list = CorpusJson.Prop(e, "spheres", source, "$.query");
         CorpusJson.Require(list.ValueKind == JsonValueKind.Array, source, "$.query.spheres", "expected an array of spheres");
-        CorpusJson.Refuse(Values.SphereList.Problem(list.GetArrayLength(), 0), source, "$.query.spheres");
+        CorpusJson.Refuse(AcPhys.Formats.Values.SphereList.Problem(list.GetArrayLength(), 0), source, "$.query.spheres");
         var spheres = new List<Sphere>();
         int i = 0;
         foreach (var s in list.EnumerateArray())

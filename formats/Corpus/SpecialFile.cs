@@ -1,6 +1,6 @@
 using System.Runtime.InteropServices;
 
-namespace AcPhys.Spec.Corpus;
+namespace AcPhys.Formats.Corpus;
 
 /// <summary>
 /// What kind of file a path names when it is neither a regular file nor a folder (a FIFO, a device, a socket): such a

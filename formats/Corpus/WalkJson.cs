@@ -1,9 +1,9 @@
 using System.Numerics;
 using System.Text.Json;
 using AcPhys.Core.Text;
-using AcPhys.Spec.Cases;
+using AcPhys.Formats.Cases;
 
-namespace AcPhys.Spec.Corpus;
+namespace AcPhys.Formats.Corpus;
 
 /// <summary>
 /// The <c>walk</c> object of a corpus file (docs/corpus-format.md):
@@ -11,8 +11,8 @@ namespace AcPhys.Spec.Corpus;
 /// </summary>
 public static class WalkJson
 {
-    /// <summary>Largest number of steps or spheres a file may hold (bounded input; the sphere rule is <see cref="Values.SphereList"/>).</summary>
-    public const int MaxItems = Values.SphereList.Max;
+    /// <summary>Largest number of steps or spheres a file may hold (bounded input; the sphere rule is <see cref="AcPhys.Formats.Values.SphereList"/>).</summary>
+    public const int MaxItems = AcPhys.Formats.Values.SphereList.Max;
 
     /// <summary>Writes the walk as the property <c>walk</c>.</summary>
     /// <param name="w">The writer, inside the entry object.</param>
@@ -49,7 +49,7 @@ public static class WalkJson
     /// <summary>Reads and validates a walk object.</summary>
     /// <param name="e">The <c>walk</c> element.</param>
     /// <param name="source">File name for messages.</param>
-    /// <param name="minSpheres">The fewest body spheres (<see cref="Values.SphereList"/>): 1 for every walk file today, because the walk invariants judge sphere 0 (an empty body has no containing cell on the reference; a protocol query, by contrast, may be empty and then reads its <c>origin</c>).</param>
+    /// <param name="minSpheres">The fewest body spheres (<see cref="AcPhys.Formats.Values.SphereList"/>): 1 for every walk file today, because the walk invariants judge sphere 0 (an empty body has no containing cell on the reference; a protocol query, by contrast, may be empty and then reads its <c>origin</c>).</param>
     /// <returns>The walk.</returns>
     /// <exception cref="CorpusFormatException">Any defect, with its JSON path.</exception>
     public static Walk Read(JsonElement e, string source, int minSpheres = 1)
@@ -58,7 +58,7 @@ public static class WalkJson
         var start = CorpusJson.Prop(e, "start", source, "$.walk");
         CorpusJson.Require(start.ValueKind == JsonValueKind.Object, source, "$.walk.start", "expected an object");
         string cellText = CorpusJson.Str(start, "cell", source, "$.walk.start");
-        CorpusJson.Require(CellIdText.TryParse(cellText, out var cell), source, "$.walk.start.cell", $"expected \"0x\" and 8 hex digits, got \"{Values.InputQuote.Brief(cellText)}\"");
+        CorpusJson.Require(CellIdText.TryParse(cellText, out var cell), source, "$.walk.start.cell", $"expected \"0x\" and 8 hex digits, got \"{AcPhys.Formats.Values.InputQuote.Brief(cellText)}\"");
         var position = new Vector3(
             Finite(start, "x", source, "$.walk.start"),
             Finite(start, "y", source, "$.walk.start"),
@@ -66,7 +66,7 @@ public static class WalkJson
 
         var body = CorpusJson.Prop(e, "body", source, "$.walk");
         CorpusJson.Require(body.ValueKind == JsonValueKind.Array, source, "$.walk.body", "expected an array of spheres");
-        CorpusJson.Refuse(Values.SphereList.Problem(body.GetArrayLength(), minSpheres), source, "$.walk.body");
+        CorpusJson.Refuse(AcPhys.Formats.Values.SphereList.Problem(body.GetArrayLength(), minSpheres), source, "$.walk.body");
         var spheres = new List<BodySphere>();
         int i = 0;
         foreach (var b in body.EnumerateArray())
@@ -74,7 +74,7 @@ public static class WalkJson
             string at = $"$.walk.body[{i}]";
             CorpusJson.Require(b.ValueKind == JsonValueKind.Object, source, at, "expected an object");
             float r = CorpusJson.Float(b, "r", source, at);
-            CorpusJson.Refuse(Values.SphereRadius.Problem(r), source, at + ".r");
+            CorpusJson.Refuse(AcPhys.Formats.Values.SphereRadius.Problem(r), source, at + ".r");
             spheres.Add(new BodySphere(new Vector3(Finite(b, "x", source, at), Finite(b, "y", source, at), Finite(b, "z", source, at)), r));
             i++;
         }
@@ -104,7 +104,7 @@ public static class WalkJson
 
     private static float Component(JsonElement e, string source, string path)
     {
-        _ = Values.Float32Json.TryRead(e, nonFiniteNames: false, out float v, out string? problem);
+        _ = AcPhys.Formats.Values.Float32Json.TryRead(e, nonFiniteNames: false, out float v, out string? problem);
         CorpusJson.Refuse(problem, source, path);
         return v;
     }

@@ -1,4 +1,4 @@
-namespace AcPhys.Spec.Dat;
+namespace AcPhys.Formats.Dat;
 
 /// <summary>
 /// Writes and reads BSP trees in retail's node layout (dat-records.md, BSP node): depth first, a node's children

@@ -1,6 +1,6 @@
 using AcPhys.Core;
 
-namespace AcPhys.Spec.Dat;
+namespace AcPhys.Formats.Dat;
 
 /// <summary>Which of a CellStruct's trees a node belongs to: it decides the node's trailing fields (dat-records.md, BSP node).</summary>
 public enum BspTreeType

@@ -1,4 +1,4 @@
-namespace AcPhys.Spec.Dat;
+namespace AcPhys.Formats.Dat;
 
 /// <summary>
 /// BSP node tags (dat-records.md, BSP node; facts §5.7): 4 ASCII letters, stored reversed, so the u32 read

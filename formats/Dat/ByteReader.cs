@@ -3,7 +3,7 @@ using System.Numerics;
 using System.Runtime.CompilerServices;
 using AcPhys.Core;
 
-namespace AcPhys.Spec.Dat;
+namespace AcPhys.Formats.Dat;
 
 /// <summary>
 /// Bounded little-endian record reader. Every failure is a <see cref="DatFormatException"/> naming the record, the
@@ -164,7 +164,7 @@ public sealed class ByteReader(byte[] data, string kind, uint id, bool named = t
         var c = Vec(Sub(field, ".center"));
         int at = Position;
         float r = F32(Sub(field, ".radius"));
-        string? bad = Values.SphereRadius.Problem(r);
+        string? bad = AcPhys.Formats.Values.SphereRadius.Problem(r);
         Require(bad is null, Sub(field, ".radius"), at, bad ?? string.Empty);
         return new Sphere(c, r);
     }

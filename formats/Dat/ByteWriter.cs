@@ -2,7 +2,7 @@ using System.Buffers.Binary;
 using System.Numerics;
 using AcPhys.Core;
 
-namespace AcPhys.Spec.Dat;
+namespace AcPhys.Formats.Dat;
 
 /// <summary>Little-endian record writer; <see cref="Align"/> pads from the record's first byte (dat-records.md, ALIGN).</summary>
 public sealed class ByteWriter

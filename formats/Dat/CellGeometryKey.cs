@@ -1,8 +1,8 @@
 using System.Runtime.InteropServices;
+using AcPhys.Contract;
 using AcPhys.Core;
-using AcPhys.Spec.Scenes;
 
-namespace AcPhys.Spec.Dat;
+namespace AcPhys.Formats.Dat;
 
 /// <summary>
 /// A key equal for cells whose CellStructs would be equal (<see cref="CellStructBuilder.Build"/> reads nothing else):

@@ -1,8 +1,8 @@
 using System.Numerics;
+using AcPhys.Contract;
 using AcPhys.Core;
-using AcPhys.Spec.Scenes;
 
-namespace AcPhys.Spec.Dat;
+namespace AcPhys.Formats.Dat;
 
 /// <summary>
 /// Builds a cell's CellStruct (docs/dat-scenes.md, "Environment"): per piece its corner vertices and face polygons;

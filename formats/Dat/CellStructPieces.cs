@@ -1,8 +1,8 @@
 using System.Numerics;
+using AcPhys.Contract;
 using AcPhys.Core;
-using AcPhys.Spec.Scenes;
 
-namespace AcPhys.Spec.Dat;
+namespace AcPhys.Formats.Dat;
 
 /// <summary>
 /// Reads a CellStruct back into scene geometry: the cell BSP's positive chains are the convex pieces (the root's chain

@@ -1,4 +1,4 @@
-namespace AcPhys.Spec.Dat;
+namespace AcPhys.Formats.Dat;
 
 /// <summary>A CellStruct of an Environment record (dat-records.md, CellStruct); keyed by the EnvCell's cell structure.</summary>
 /// <param name="Key">The key.</param>

@@ -1,8 +1,8 @@
-using AcPhys.Spec.Cases;
-using AcPhys.Spec.Corpus;
-using AcPhys.Spec.Scenes;
+using AcPhys.Contract;
+using AcPhys.Formats.Cases;
+using AcPhys.Formats.Corpus;
 
-namespace AcPhys.Spec.Dat;
+namespace AcPhys.Formats.Dat;
 
 /// <summary>
 /// A record folder: <c>XXXXXXXX.bin</c> per record (the raw record bytes, as a dat reader assembles them) and

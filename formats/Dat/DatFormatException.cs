@@ -1,4 +1,4 @@
-namespace AcPhys.Spec.Dat;
+namespace AcPhys.Formats.Dat;
 
 /// <summary>
 /// A record folder or a record that is not valid: the message names the record (or manifest), the field and the byte

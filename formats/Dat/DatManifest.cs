@@ -1,8 +1,8 @@
 using AcPhys.Core;
-using AcPhys.Spec.Cases;
-using AcPhys.Spec.Corpus;
+using AcPhys.Formats.Cases;
+using AcPhys.Formats.Corpus;
 
-namespace AcPhys.Spec.Dat;
+namespace AcPhys.Formats.Dat;
 
 /// <summary>One record of a folder: its id, which dat it belongs to, and its type (the file is <see cref="RecordIds.FileName"/>).</summary>
 /// <param name="Id">The record id.</param>

@@ -3,9 +3,9 @@ using System.Text;
 using System.Text.Json;
 using AcPhys.Core;
 using AcPhys.Core.Text;
-using AcPhys.Spec.Corpus;
+using AcPhys.Formats.Corpus;
 
-namespace AcPhys.Spec.Dat;
+namespace AcPhys.Formats.Dat;
 
 /// <summary>Writes and strictly reads manifest.json (docs/dat-scenes.md, "Manifest"); errors name the JSON path.</summary>
 public static class DatManifestJson
@@ -212,7 +212,7 @@ public static class DatManifestJson
             string idText = Str(e, "id", source, i);
             if (!(idText.StartsWith("0x", StringComparison.Ordinal) && idText.Length == 10 && uint.TryParse(idText.AsSpan(2), NumberStyles.AllowHexSpecifier, CultureInfo.InvariantCulture, out uint id)))
             {
-                throw Fail(source, RecordPath(i) + ".id", $"expected \"0x\" and 8 hex digits, got \"{Values.InputQuote.Brief(idText)}\"");
+                throw Fail(source, RecordPath(i) + ".id", $"expected \"0x\" and 8 hex digits, got \"{AcPhys.Formats.Values.InputQuote.Brief(idText)}\"");
             }
 
             string dat = Str(e, "dat", source, i);
@@ -365,7 +365,7 @@ public static class DatManifestJson
         string text = Text(e, path, source);
         if (!(text.StartsWith("0x", StringComparison.Ordinal) && text.Length == 6 && ushort.TryParse(text.AsSpan(2), NumberStyles.AllowHexSpecifier, CultureInfo.InvariantCulture, out ushort v)))
         {
-            throw new DatFormatException($"{source}: {path}: expected a block id \"0x\" and 4 hex digits, got \"{Values.InputQuote.Brief(text)}\"");
+            throw new DatFormatException($"{source}: {path}: expected a block id \"0x\" and 4 hex digits, got \"{AcPhys.Formats.Values.InputQuote.Brief(text)}\"");
         }
 
         return new LandblockId(v);
@@ -376,7 +376,7 @@ public static class DatManifestJson
         string text = Text(e, path, source);
         if (!CellIdText.TryParse(text, out var id))
         {
-            throw new DatFormatException($"{source}: {path}: expected a cell id \"0x\" and 8 hex digits, got \"{Values.InputQuote.Brief(text)}\"");
+            throw new DatFormatException($"{source}: {path}: expected a cell id \"0x\" and 8 hex digits, got \"{AcPhys.Formats.Values.InputQuote.Brief(text)}\"");
         }
 
         return id;

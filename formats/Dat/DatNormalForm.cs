@@ -1,7 +1,7 @@
+using AcPhys.Contract;
 using AcPhys.Core;
-using AcPhys.Spec.Scenes;
 
-namespace AcPhys.Spec.Dat;
+namespace AcPhys.Formats.Dat;
 
 /// <summary>
 /// The round-trip normal form (docs/dat-scenes.md, "Round trip"): what read(write(scene)) returns. Pieces come back

@@ -1,6 +1,6 @@
 using System.Numerics;
 
-namespace AcPhys.Spec.Dat;
+namespace AcPhys.Formats.Dat;
 
 /// <summary>A CellStruct vertex: id, origin, normal and UVs (dat-records.md, CellStruct).</summary>
 /// <param name="Id">The key.</param>

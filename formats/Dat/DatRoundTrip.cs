@@ -1,7 +1,7 @@
 using System.Runtime.CompilerServices;
-using AcPhys.Spec.Scenes;
+using AcPhys.Contract;
 
-namespace AcPhys.Spec.Dat;
+namespace AcPhys.Formats.Dat;
 
 /// <summary>
 /// A scene as an implementation that reads dat records sees it: read(write(scene)), cached per scene instance. Portal
@@ -36,9 +36,9 @@ public static class DatRoundTrip
             }
         }
 
-        long t = Values.WireProfile.Start();
+        long t = AcPhys.Formats.Values.WireProfile.Start();
         var export = DatSceneWriter.Write(scene, "wire", "load_scene");
-        Values.WireProfile.Stop("tool: DatSceneWriter.Write", t);
+        AcPhys.Formats.Values.WireProfile.Stop("tool: DatSceneWriter.Write", t);
         lock (Recent)
         {
             Recent[next] = (scene, export);
@@ -51,7 +51,7 @@ public static class DatRoundTrip
     /// <summary>Returns the scene as the records give it back.</summary>
     /// <param name="scene">A valid scene.</param>
     /// <returns>read(write(scene)), read from the very records <see cref="Records"/> sends.</returns>
-    public static Scene Of(Scene scene) => Cache.GetValue(scene, s => Values.WireProfile.Time("tool: records read back (guess's scene)", () =>
+    public static Scene Of(Scene scene) => Cache.GetValue(scene, s => AcPhys.Formats.Values.WireProfile.Time("tool: records read back (guess's scene)", () =>
     {
         var export = Records(s);
         var bytes = export.Records.ToDictionary(r => r.Record, r => r.Bytes);

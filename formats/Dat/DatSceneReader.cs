@@ -1,8 +1,9 @@
 using System.Numerics;
+using AcPhys.Contract;
 using AcPhys.Core;
-using AcPhys.Spec.Scenes;
+using AcPhys.Formats.Scenes;
 
-namespace AcPhys.Spec.Dat;
+namespace AcPhys.Formats.Dat;
 
 /// <summary>
 /// Reads records back into a scene through their manifest (docs/dat-scenes.md, "Reading"): every record parsed
@@ -31,7 +32,7 @@ public static class DatSceneReader
         foreach (var r in manifest.Records.Where(r => r.Type == RecordType.Environment))
         {
             Require((r.Id & 0xFFFF0000) == 0x0D000000, $"Environment {RecordIds.Text(r.Id)}: an EnvCell names environments by a low word, so the id must be 0x0D00xxxx");
-            environments[(ushort)r.Id] = Values.WireProfile.Time("dat read: Environment", () => EnvironmentCodec.Read(load(r), r.Id)).ToDictionary(s => s.Key);
+            environments[(ushort)r.Id] = AcPhys.Formats.Values.WireProfile.Time("dat read: Environment", () => EnvironmentCodec.Read(load(r), r.Id)).ToDictionary(s => s.Key);
         }
 
         var landblocks = new HashSet<LandblockId>();
@@ -52,9 +53,9 @@ public static class DatSceneReader
         var elsewhere = manifest.VisibleElsewhere.ToDictionary(e => e.Cell, e => e.Visible);
         foreach (var r in manifest.Records.Where(r => r.Type == RecordType.EnvCell))
         {
-            long t = Values.WireProfile.Start(); // no closure per cell (issue 26)
+            long t = AcPhys.Formats.Values.WireProfile.Start(); // no closure per cell (issue 26)
             cells.Add(Cell(EnvCellRecord.Read(load(r), r.Id), environments, elsewhere.GetValueOrDefault(new CellId(r.Id)) ?? []));
-            Values.WireProfile.Stop("dat read: EnvCell + cell", t);
+            AcPhys.Formats.Values.WireProfile.Stop("dat read: EnvCell + cell", t);
         }
 
         foreach (var (cell, _) in manifest.VisibleElsewhere)
@@ -93,7 +94,7 @@ public static class DatSceneReader
         {
             // The same checks a scene file gets (references, declared blocks, unit quaternions, one building per land
             // cell), on the scene as built: no JSON round trip (issue #26), the same first message.
-            return Values.WireProfile.Time("dat read: SceneRules.Check", () => new SceneRules("records").Check(scene, "$"));
+            return AcPhys.Formats.Values.WireProfile.Time("dat read: SceneRules.Check", () => new SceneRules("records").Check(scene, "$"));
         }
         catch (SceneFormatException e)
         {
@@ -110,9 +111,9 @@ public static class DatSceneReader
             ?? throw new DatFormatException($"{where}: environmentId: Environment 0x0D00{r.EnvironmentId:X4} is not in the folder");
         var cs = structs.GetValueOrDefault(r.CellStructure)
             ?? throw new DatFormatException($"{where}: cellStructure: Environment 0x0D00{r.EnvironmentId:X4} has no CellStruct {r.CellStructure}");
-        long t = Values.WireProfile.Start();
+        long t = AcPhys.Formats.Values.WireProfile.Start();
         var pieces = CellStructPieces.Of(cs.CellBsp, $"Environment 0x0D00{r.EnvironmentId:X4} cellStructs[key {cs.Key}].cellBsp");
-        Values.WireProfile.Stop("dat read: cell pieces from BSP", t);
+        AcPhys.Formats.Values.WireProfile.Stop("dat read: cell pieces from BSP", t);
         var portals = new List<ScenePortal>();
         for (int i = 0; i < r.Portals.Count; i++)
         {
@@ -121,9 +122,9 @@ public static class DatSceneReader
             Require((p.Flags & ~7) == 0, $"{f}.flags: unknown bits 0x{p.Flags & ~7:X} (known: 1 ExactMatch, 2, 4 outside)");
             bool exit = p.OtherCellId == CellPortal.Outside;
             Require(((p.Flags & CellPortal.OutsideFlag) != 0) == exit, $"{f}.flags: flag 4 (outside) {((p.Flags & 4) != 0 ? "set" : "clear")} but otherCellId 0x{p.OtherCellId:X4} (retail reads the flag, ACE the id: they must agree)");
-            t = Values.WireProfile.Start();
+            t = AcPhys.Formats.Values.WireProfile.Start();
             var plane = CellStructPieces.PortalPlane(cs, p.PolygonId, f + ".polygonId");
-            Values.WireProfile.Stop("dat read: portal plane", t);
+            AcPhys.Formats.Values.WireProfile.Stop("dat read: portal plane", t);
             portals.Add(new ScenePortal(plane, p.OtherCellId, (p.Flags & CellPortal.NegativeSideFlag) == 0, p.OtherPortalId));
         }
 

@@ -1,8 +1,8 @@
 using System.Numerics;
+using AcPhys.Contract;
 using AcPhys.Core;
-using AcPhys.Spec.Scenes;
 
-namespace AcPhys.Spec.Dat;
+namespace AcPhys.Formats.Dat;
 
 /// <summary>A scene written as records: each record's bytes and the manifest.</summary>
 /// <param name="Records">The records and their bytes, in manifest order.</param>
@@ -62,17 +62,17 @@ public static class DatSceneWriter
         foreach (var cell in scene.Cells)
         {
             Require(cell.Portals.Count <= byte.MaxValue, $"cell {cell.Id} has {cell.Portals.Count} portals; an EnvCell holds at most 255");
-            long t = Values.WireProfile.Start(); // no closure per cell (issue 26)
+            long t = AcPhys.Formats.Values.WireProfile.Start(); // no closure per cell (issue 26)
             var key = CellGeometryKey.Of(cell);
-            Values.WireProfile.Stop("dat write: GeometryKey", t);
+            AcPhys.Formats.Values.WireProfile.Stop("dat write: GeometryKey", t);
             if (!keys.TryGetValue(key, out ushort index))
             {
                 Require(structs.Count <= ushort.MaxValue, "more than 65536 distinct cell geometries");
                 index = (ushort)structs.Count;
                 keys.Add(key, index);
-                t = Values.WireProfile.Start();
+                t = AcPhys.Formats.Values.WireProfile.Start();
                 structs.Add(CellStructBuilder.Build(index, cell));
-                Values.WireProfile.Stop("dat write: CellStructBuilder.Build", t);
+                AcPhys.Formats.Values.WireProfile.Stop("dat write: CellStructBuilder.Build", t);
             }
 
             var cs = structs[index];
@@ -89,7 +89,7 @@ public static class DatSceneWriter
         }
 
         records.AddRange(cellRecords);
-        records.Insert(0, (new ManifestRecord(RecordIds.EnvironmentId, true, RecordType.Environment), Values.WireProfile.Time("dat write: Environment", () => EnvironmentCodec.Write(RecordIds.EnvironmentId, structs))));
+        records.Insert(0, (new ManifestRecord(RecordIds.EnvironmentId, true, RecordType.Environment), AcPhys.Formats.Values.WireProfile.Time("dat write: Environment", () => EnvironmentCodec.Write(RecordIds.EnvironmentId, structs))));
         var manifest = new DatManifest(title, source, [.. records.Select(r => r.Item1)], scene.Blocks, scene.UnloadedBlocks, scene.UnloadedCells, elsewhere);
         return new DatExport(records, manifest);
     }

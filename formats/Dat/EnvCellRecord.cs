@@ -1,6 +1,6 @@
 using System.Numerics;
 
-namespace AcPhys.Spec.Dat;
+namespace AcPhys.Formats.Dat;
 
 /// <summary>An EnvCell portal as stored (facts §5.4): flags (1 ExactMatch, 2 clear ⇒ PortalSide, 4 outside), polygon, other cell and portal.</summary>
 /// <param name="Flags">The flags.</param>

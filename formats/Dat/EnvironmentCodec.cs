@@ -1,6 +1,6 @@
 using System.Numerics;
 
-namespace AcPhys.Spec.Dat;
+namespace AcPhys.Formats.Dat;
 
 /// <summary>
 /// The Environment record 0x0D?????? (dat-records.md, Environment and CellStruct): id, a plain u32 count, then

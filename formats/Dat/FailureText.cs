@@ -1,6 +1,6 @@
 using System.Runtime.CompilerServices;
 
-namespace AcPhys.Spec.Dat;
+namespace AcPhys.Formats.Dat;
 
 /// <summary>
 /// The message of a check, written only when the check fails: <c>Require(ok, $"...")</c> formats nothing while

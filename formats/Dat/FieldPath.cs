@@ -1,6 +1,6 @@
 using System.Runtime.CompilerServices;
 
-namespace AcPhys.Spec.Dat;
+namespace AcPhys.Formats.Dat;
 
 /// <summary>
 /// A field's path in a record (<c>$"{at}.vertices[{i}]"</c>), written only when the reader names its fields: a strict

@@ -1,6 +1,6 @@
 using System.Numerics;
 
-namespace AcPhys.Spec.Dat;
+namespace AcPhys.Formats.Dat;
 
 /// <summary>A CBldPortal (facts §5.4): flags, the env cell behind (low word, same block), its portal index (0xFFFF none), stabs.</summary>
 /// <param name="Flags">Flags (2 clear ⇒ PortalSide).</param>

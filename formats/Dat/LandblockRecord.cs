@@ -1,6 +1,6 @@
 using System.Buffers.Binary;
 
-namespace AcPhys.Spec.Dat;
+namespace AcPhys.Formats.Dat;
 
 /// <summary>
 /// A Landblock record 0xAABBFFFF (dat-records.md, Landblock): hasObjects, 81 terrain words, 81 height bytes (bytes,

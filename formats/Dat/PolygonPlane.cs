@@ -1,7 +1,7 @@
 using System.Numerics;
 using AcPhys.Core;
 
-namespace AcPhys.Spec.Dat;
+namespace AcPhys.Formats.Dat;
 
 /// <summary>
 /// The plane of a polygon from its vertices: the fan sum Σ (vᵢ − v₀) × (vᵢ₊₁ − v₀) (twice the area vector, Newell's
@@ -36,7 +36,7 @@ public static class PolygonPlane
         return new CellPlane(n, -Vector3.Dot(n, vertices[0]));
     }
 
-    /// <summary>Returns the unit-normal form of a plane, as <see cref="Scenes.SceneBuild"/> gives it to the core.</summary>
+    /// <summary>Returns the unit-normal form of a plane, as <see cref="AcPhys.Contract.SceneBuild"/> gives it to the core.</summary>
     /// <param name="p">A plane with a non-zero normal.</param>
     /// <returns>N/|N|, D/|N|.</returns>
     public static CellPlane Unit(CellPlane p) => new(Vector3.Normalize(p.Normal), p.D / p.Normal.Length());

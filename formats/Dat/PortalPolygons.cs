@@ -1,7 +1,7 @@
+using AcPhys.Contract;
 using AcPhys.Core;
-using AcPhys.Spec.Scenes;
 
-namespace AcPhys.Spec.Dat;
+namespace AcPhys.Formats.Dat;
 
 /// <summary>
 /// Portal polygons for a scene given by planes (issue #29): each portal gets the quad the dat export writes for it

@@ -1,6 +1,6 @@
 using System.Globalization;
 
-namespace AcPhys.Spec.Dat;
+namespace AcPhys.Formats.Dat;
 
 /// <summary>The record types a scene is written as.</summary>
 public enum RecordType

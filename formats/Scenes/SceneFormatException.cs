@@ -1,4 +1,4 @@
-namespace AcPhys.Spec.Scenes;
+namespace AcPhys.Formats.Scenes;
 
 /// <summary>A scene that is not valid: the message names the source, the JSON path and what is wrong. The scene is refused whole.</summary>
 public sealed class SceneFormatException : Exception

@@ -2,11 +2,12 @@ using System.Globalization;
 using System.Numerics;
 using System.Text;
 using System.Text.Json;
+using AcPhys.Contract;
 using AcPhys.Core;
 using AcPhys.Core.Text;
-using AcPhys.Spec.Cases;
+using AcPhys.Formats.Cases;
 
-namespace AcPhys.Spec.Scenes;
+namespace AcPhys.Formats.Scenes;
 
 /// <summary>
 /// Reads and writes scenes (docs/indoor.md, "Scene files"). Reading validates everything and refuses the scene
@@ -187,14 +188,14 @@ public static class SceneJson
         {
             // Unreadable text first: the duplicate-key search reads every property name, and a lone surrogate
             // escape in one throws InvalidOperationException (found by the scene-json fuzz target).
-            if (Corpus.JsonStrings.FirstUnreadable(doc.RootElement, "$") is { } bad)
+            if (AcPhys.Formats.Corpus.JsonStrings.FirstUnreadable(doc.RootElement, "$") is { } bad)
             {
                 throw new SceneFormatException($"{source}: {bad}: not valid text (a lone UTF-16 surrogate escape)");
             }
 
-            if (AcPhys.Spec.Corpus.JsonKeys.FirstDuplicate(doc.RootElement) is { } duplicate)
+            if (AcPhys.Formats.Corpus.JsonKeys.FirstDuplicate(doc.RootElement) is { } duplicate)
             {
-                throw new SceneFormatException($"{source}: {AcPhys.Spec.Corpus.JsonKeys.Message(duplicate)}");
+                throw new SceneFormatException($"{source}: {AcPhys.Formats.Corpus.JsonKeys.Message(duplicate)}");
             }
 
             return Read(doc.RootElement, source, "$");
@@ -211,7 +212,7 @@ public static class SceneJson
     {
         var r = new Reader(source);
         r.Require(e.ValueKind == JsonValueKind.Object, at, "expected an object");
-        if (Corpus.JsonStrings.FirstUnreadable(e, at) is { } bad)
+        if (AcPhys.Formats.Corpus.JsonStrings.FirstUnreadable(e, at) is { } bad)
         {
             throw new SceneFormatException($"{source}: {bad}: not valid text (a lone UTF-16 surrogate escape)");
         }
@@ -313,13 +314,13 @@ public static class SceneJson
             string text = e.ValueKind == JsonValueKind.String ? e.GetString()! : string.Empty;
             bool ok = text.StartsWith("0x", StringComparison.OrdinalIgnoreCase) && text.Length == 6
                 && ushort.TryParse(text.AsSpan(2), NumberStyles.AllowHexSpecifier, CultureInfo.InvariantCulture, out var v);
-            Require(ok, path, $"expected a block id \"0x\" and 4 hex digits, got {Values.InputQuote.Json(e)}");
+            Require(ok, path, $"expected a block id \"0x\" and 4 hex digits, got {AcPhys.Formats.Values.InputQuote.Json(e)}");
             return new LandblockId(ushort.Parse(text.AsSpan(2), NumberStyles.AllowHexSpecifier, CultureInfo.InvariantCulture));
         }
 
         public CellId EnvCellId(JsonElement e, string path)
         {
-            Require(e.ValueKind == JsonValueKind.String && CellIdText.TryParse(e.GetString()!, out var id), path, $"expected a cell id \"0x\" and 8 hex digits, got {Values.InputQuote.Json(e)}");
+            Require(e.ValueKind == JsonValueKind.String && CellIdText.TryParse(e.GetString()!, out var id), path, $"expected a cell id \"0x\" and 8 hex digits, got {AcPhys.Formats.Values.InputQuote.Json(e)}");
             CellIdText.TryParse(e.GetString()!, out var cell);
             Rules.EnvCell(cell, path);
             return cell;
@@ -330,7 +331,7 @@ public static class SceneJson
             string text = e.ValueKind == JsonValueKind.String ? e.GetString()! : string.Empty;
             bool ok = text.StartsWith("0x", StringComparison.OrdinalIgnoreCase) && text.Length == 6
                 && ushort.TryParse(text.AsSpan(2), NumberStyles.AllowHexSpecifier, CultureInfo.InvariantCulture, out _);
-            Require(ok, path, $"expected a low word \"0x\" and 4 hex digits{(env ? string.Empty : " or \"outside\"")}, got {Values.InputQuote.Json(e)}");
+            Require(ok, path, $"expected a low word \"0x\" and 4 hex digits{(env ? string.Empty : " or \"outside\"")}, got {AcPhys.Formats.Values.InputQuote.Json(e)}");
             ushort v = ushort.Parse(text.AsSpan(2), NumberStyles.AllowHexSpecifier, CultureInfo.InvariantCulture);
             Rules.EnvLow(v, path);
             return v;
@@ -338,7 +339,7 @@ public static class SceneJson
 
         public float Number(JsonElement e, string path)
         {
-            bool ok = Values.Float32Json.TryRead(e, nonFiniteNames: false, out float f, out string? problem);
+            bool ok = AcPhys.Formats.Values.Float32Json.TryRead(e, nonFiniteNames: false, out float f, out string? problem);
             Require(ok, path, problem ?? string.Empty);
             return f;
         }
@@ -373,10 +374,10 @@ public static class SceneJson
                 var xyz = v.EnumerateArray().Select((x, k) => Number(x, $"{path}[{i}][{k}]")).ToArray();
                 return new Vector3(xyz[0], xyz[1], xyz[2]);
             }).ToArray();
-            var derived = Spec.Dat.PolygonPlane.Of(vertices);
+            var derived = AcPhys.Formats.Dat.PolygonPlane.Of(vertices);
             Require(derived is not null, path, "the polygon spans no area");
             var got = derived.GetValueOrDefault();
-            var given = Spec.Dat.PolygonPlane.Unit(plane);
+            var given = AcPhys.Formats.Dat.PolygonPlane.Unit(plane);
             Require(
                 Vector3.Dot(got.Normal, given.Normal) > 1 - 1e-5f && MathF.Abs(got.D - given.D) <= 1e-3f,
                 path,

@@ -1,8 +1,9 @@
 using System.Globalization;
 using System.Numerics;
+using AcPhys.Contract;
 using AcPhys.Core;
 
-namespace AcPhys.Spec.Scenes;
+namespace AcPhys.Formats.Scenes;
 
 /// <summary>
 /// The rules a scene must keep (docs/indoor.md, "Scene files"), on typed values: the scene file reader
@@ -68,7 +69,7 @@ public sealed class SceneRules(string source)
     /// <param name="path">The JSON path of the value.</param>
     /// <param name="message">What is wrong (an interpolated string, formatted only when <paramref name="ok"/> is false: issue 26).</param>
     /// <exception cref="SceneFormatException">When <paramref name="ok"/> is false.</exception>
-    public void Require(bool ok, string path, [System.Runtime.CompilerServices.InterpolatedStringHandlerArgument("ok")] ref Dat.FailureText message) =>
+    public void Require(bool ok, string path, [System.Runtime.CompilerServices.InterpolatedStringHandlerArgument("ok")] ref AcPhys.Formats.Dat.FailureText message) =>
         Require(ok, new At(path), ref message);
 
     /// <summary>A list holds at most <see cref="MaxItems"/> items.</summary>
@@ -212,7 +213,7 @@ public sealed class SceneRules(string source)
     }
 
     // The rules on a lazily spelt path (At): the public methods above give them a spelt one.
-    private void Require(bool ok, At path, [System.Runtime.CompilerServices.InterpolatedStringHandlerArgument("ok")] ref Dat.FailureText message)
+    private void Require(bool ok, At path, [System.Runtime.CompilerServices.InterpolatedStringHandlerArgument("ok")] ref AcPhys.Formats.Dat.FailureText message)
     {
         if (!ok)
         {

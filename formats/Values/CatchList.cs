@@ -1,6 +1,6 @@
 using System.Globalization;
 
-namespace AcPhys.Spec.Values;
+namespace AcPhys.Formats.Values;
 
 /// <summary>
 /// The rule for a corpus entry's <c>catches</c> (the planted faults its case catches) wherever one is read: at most

@@ -1,6 +1,6 @@
 using System.Text.Json;
 
-namespace AcPhys.Spec.Values;
+namespace AcPhys.Formats.Values;
 
 /// <summary>
 /// Quotes user input in an error message: at most <see cref="MaxChars"/> characters of it, so a 50 MB value never comes

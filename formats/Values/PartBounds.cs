@@ -1,7 +1,7 @@
 using System.Globalization;
 using AcPhys.Core;
 
-namespace AcPhys.Spec.Values;
+namespace AcPhys.Formats.Values;
 
 /// <summary>
 /// The bounds of a parts query wherever one is read (corpus files, protocol requests, <c>serve</c>): the cells

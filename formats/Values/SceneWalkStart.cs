@@ -1,7 +1,7 @@
+using AcPhys.Contract;
 using AcPhys.Core;
-using AcPhys.Spec.Scenes;
 
-namespace AcPhys.Spec.Values;
+namespace AcPhys.Formats.Values;
 
 /// <summary>
 /// The rule for where a scene walk starts, wherever one is read (corpus files, record folders): an env-cell start must

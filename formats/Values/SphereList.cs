@@ -1,4 +1,4 @@
-namespace AcPhys.Spec.Values;
+namespace AcPhys.Formats.Values;
 
 /// <summary>
 /// The rule for a list of spheres wherever one is read (a walk's body, a protocol request's <c>spheres</c>): at most

@@ -1,4 +1,4 @@
-namespace AcPhys.Spec.Values;
+namespace AcPhys.Formats.Values;
 
 /// <summary>
 /// The rule for a sphere's radius wherever one is read (corpus walks and parts, protocol requests, dat records): a

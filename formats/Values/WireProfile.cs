@@ -2,7 +2,7 @@ using System.Collections.Concurrent;
 using System.Diagnostics;
 using System.Globalization;
 
-namespace AcPhys.Spec.Values;
+namespace AcPhys.Formats.Values;
 
 /// <summary>
 /// An opt-in stopwatch breakdown of the served path (issue 26; docs/protocol.md, "Speed"): with

@@ -1,4 +1,5 @@
 using System.Text;
+using AcPhys.Formats.Corpus;
 using AcPhys.Spec.Corpus;
 
 namespace AcPhys.Fuzz.Targets;

@@ -1,5 +1,5 @@
-using AcPhys.Spec.Dat;
-using AcPhys.Spec.Dat.Container;
+using AcPhys.Formats.Dat;
+using AcPhys.Formats.Dat.Container;
 
 namespace AcPhys.Fuzz.Targets;
 
@@ -66,7 +66,7 @@ public sealed class DatContainerTarget : FuzzTarget
 
     private static Dictionary<string, byte[]> BuildSeeds()
     {
-        var cottage = Spec.Scenes.SceneKit.Cottage(new Spec.Scenes.CottagePlan((192.0 * 0x40) + 50, (192.0 * 0x41) + 60, 0.5f, 3, 6, 5, 0x5A, BackDoor: true, Storey: false));
+        var cottage = AcPhys.Spec.Scenes.SceneKit.Cottage(new AcPhys.Spec.Scenes.CottagePlan((192.0 * 0x40) + 50, (192.0 * 0x41) + 60, 0.5f, 3, 6, 5, 0x5A, BackDoor: true, Storey: false));
         var records = DatSceneWriter.Write(cottage, "cottage", "cottage").Records;
         var filler = Enumerable.Range(0, 70).Select(i => ((uint)(0x01000000 + i), new byte[i % 5])).ToList();
         return new Dictionary<string, byte[]>

@@ -1,4 +1,4 @@
-using AcPhys.Spec.Dat;
+using AcPhys.Formats.Dat;
 
 namespace AcPhys.Fuzz.Targets;
 
@@ -88,10 +88,10 @@ public sealed class DatRecordsTarget : FuzzTarget
 
     private static Dictionary<string, byte[]> BuildSeeds()
     {
-        var scenes = new Dictionary<string, Spec.Scenes.Scene>
+        var scenes = new Dictionary<string, AcPhys.Contract.Scene>
         {
-            ["cottage"] = Spec.Scenes.SceneKit.Cottage(new Spec.Scenes.CottagePlan((192.0 * 0x40) + 50, (192.0 * 0x41) + 60, 0.5f, 3, 6, 5, 0x5A, BackDoor: true, Storey: true)),
-            ["dungeon"] = Spec.Scenes.SceneKit.Dungeon(new Spec.Scenes.DungeonPlan((192.0 * 0x20) + 150, (192.0 * 0x21) + 30, 4, 8, 1, 0x33)),
+            ["cottage"] = AcPhys.Spec.Scenes.SceneKit.Cottage(new AcPhys.Spec.Scenes.CottagePlan((192.0 * 0x40) + 50, (192.0 * 0x41) + 60, 0.5f, 3, 6, 5, 0x5A, BackDoor: true, Storey: true)),
+            ["dungeon"] = AcPhys.Spec.Scenes.SceneKit.Dungeon(new AcPhys.Spec.Scenes.DungeonPlan((192.0 * 0x20) + 150, (192.0 * 0x21) + 30, 4, 8, 1, 0x33)),
         };
         var seeds = new Dictionary<string, byte[]>();
         foreach (var (name, scene) in scenes)

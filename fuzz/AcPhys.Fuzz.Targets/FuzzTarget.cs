@@ -1,4 +1,4 @@
-using AcPhys.Spec.Corpus;
+using AcPhys.Formats.Corpus;
 
 namespace AcPhys.Fuzz.Targets;
 
@@ -113,13 +113,13 @@ public abstract class FuzzTarget
     /// <summary>Says why the target cannot fuzz a port, or null when it can (physics targets whose invariants the port is testable for).</summary>
     /// <param name="impl">The port.</param>
     /// <returns>The reason, or null.</returns>
-    public virtual string? WhyNotFuzzable(AcPhys.Spec.Adapters.ICellPhysics impl) =>
+    public virtual string? WhyNotFuzzable(AcPhys.Contract.ICellPhysics impl) =>
         $"target {Name} fuzzes the suite's own readers, not an implementation (--impl / --impl-cmd take a physics target: land, walk, scene, parts)";
 
     /// <summary>Gets the invariants of this target an implementation is tested for (none for targets that fuzz no implementation).</summary>
     /// <param name="impl">The implementation.</param>
     /// <returns>The invariant IDs.</returns>
-    public virtual IReadOnlyList<string> TestedFor(AcPhys.Spec.Adapters.ICellPhysics impl) => [];
+    public virtual IReadOnlyList<string> TestedFor(AcPhys.Contract.ICellPhysics impl) => [];
 
     /// <summary>Rejects a port for targets that fuzz no implementation (parsers, smoke).</summary>
     /// <param name="subject">The subject.</param>

@@ -1,7 +1,7 @@
 using System.Numerics;
 using AcPhys.Core;
-using AcPhys.Spec.Cases;
-using AcPhys.Spec.Corpus;
+using AcPhys.Formats.Cases;
+using AcPhys.Formats.Corpus;
 
 namespace AcPhys.Fuzz.Targets;
 

@@ -1,5 +1,5 @@
 using System.Text;
-using AcPhys.Spec.Corpus;
+using AcPhys.Formats.Corpus;
 
 namespace AcPhys.Fuzz.Targets;
 

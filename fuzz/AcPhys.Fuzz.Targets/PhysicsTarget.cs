@@ -1,7 +1,7 @@
+using AcPhys.Contract;
+using AcPhys.Formats.Cases;
+using AcPhys.Formats.Corpus;
 using AcPhys.Protocol.Client;
-using AcPhys.Spec.Adapters;
-using AcPhys.Spec.Cases;
-using AcPhys.Spec.Corpus;
 using AcPhys.Spec.Generators;
 using AcPhys.Spec.Invariants;
 using AcPhys.Spec.Judging;

@@ -1,4 +1,5 @@
 using System.Globalization;
+using AcPhys.Contract;
 using AcPhys.Protocol.Client;
 using AcPhys.Protocol.Messages;
 using AcPhys.Spec.Adapters;
@@ -30,7 +31,7 @@ public static class PortSubject
     {
         var assembly = AdapterAssembly.Load(path);
         var first = assembly.Create();
-        string label = $"--impl {Path.GetFileName(path)} ({Spec.Values.InputQuote.Line(first.Name ?? assembly.TypeName, 60)})";
+        string label = $"--impl {Path.GetFileName(path)} ({AcPhys.Formats.Values.InputQuote.Line(first.Name ?? assembly.TypeName, 60)})";
         return Subject.External(label, assembly.Create, freshEach: true);
     }
 
@@ -42,7 +43,7 @@ public static class PortSubject
     /// <returns>The subject.</returns>
     public static Subject Served(string commandLine, TimeSpan timeout, int maxLineBytes, Action<string>? stderrSink) =>
         Subject.External(
-            "--impl-cmd " + Spec.Values.InputQuote.Line(commandLine, 80),
+            "--impl-cmd " + AcPhys.Formats.Values.InputQuote.Line(commandLine, 80),
             () => ProcessAdapter.Start(commandLine, new ProcessAdapterOptions { Timeout = timeout, MaxLineBytes = maxLineBytes, StderrSink = stderrSink }),
             freshEach: false);
 
@@ -74,7 +75,7 @@ public static class PortSubject
         {
             timeout = double.TryParse(text, NumberStyles.Float, CultureInfo.InvariantCulture, out double s) && s is >= 0.1 and <= 3600
                 ? TimeSpan.FromSeconds(s)
-                : throw new ArgumentException($"{TimeoutVariable}: expected seconds from 0.1 to 3600, got '{Spec.Values.InputQuote.Line(text, 40)}'");
+                : throw new ArgumentException($"{TimeoutVariable}: expected seconds from 0.1 to 3600, got '{AcPhys.Formats.Values.InputQuote.Line(text, 40)}'");
         }
 
         int bytes = LineLimit.FromEnvironment(out string? problem);

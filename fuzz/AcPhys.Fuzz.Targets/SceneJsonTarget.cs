@@ -1,4 +1,6 @@
 using System.Text;
+using AcPhys.Contract;
+using AcPhys.Formats.Scenes;
 using AcPhys.Spec.Scenes;
 
 namespace AcPhys.Fuzz.Targets;

@@ -1,4 +1,5 @@
-using AcPhys.Spec.Adapters;
+using AcPhys.Contract;
+using AcPhys.Formats.Cases;
 using AcPhys.Spec.Cases;
 using AcPhys.Spec.Generators;
 using AcPhys.Spec.Invariants;

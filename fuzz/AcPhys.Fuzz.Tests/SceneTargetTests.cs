@@ -1,5 +1,7 @@
+using AcPhys.Contract;
+using AcPhys.Formats.Cases;
+using AcPhys.Formats.Corpus;
 using AcPhys.Fuzz.Targets;
-using AcPhys.Spec.Adapters;
 using AcPhys.Spec.Cases;
 using AcPhys.Spec.Corpus;
 using AcPhys.Spec.Faults;

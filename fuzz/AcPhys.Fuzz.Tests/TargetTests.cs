@@ -1,6 +1,7 @@
 using System.Text;
+using AcPhys.Contract;
+using AcPhys.Formats.Cases;
 using AcPhys.Fuzz.Targets;
-using AcPhys.Spec.Adapters;
 using AcPhys.Spec.Cases;
 using AcPhys.Spec.Corpus;
 using AcPhys.Spec.Faults;

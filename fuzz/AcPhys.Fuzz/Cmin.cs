@@ -1,5 +1,5 @@
 using System.Security.Cryptography;
-using AcPhys.Spec.Corpus;
+using AcPhys.Formats.Corpus;
 
 namespace AcPhys.Fuzz;
 

@@ -171,7 +171,7 @@ static Action<ReadOnlySpan<byte>>? Create(FuzzTarget target, Subject subject)
     {
         return PortSubject.Refusal(target, subject) is { } why ? throw new ArgumentException(why) : target.CreateTest(subject);
     }
-    catch (Exception e) when (e is ArgumentException or AcPhys.Spec.Adapters.AdapterLoadException or AcPhys.Spec.Adapters.AdapterFailureException)
+    catch (Exception e) when (e is ArgumentException or AcPhys.Spec.Adapters.AdapterLoadException or AcPhys.Contract.AdapterFailureException)
     {
         Console.Error.WriteLine(e.Message);
         return null;

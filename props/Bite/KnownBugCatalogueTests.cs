@@ -1,3 +1,4 @@
+using AcPhys.Formats.Corpus;
 using AcPhys.Props.Support;
 using AcPhys.Spec.Corpus;
 using AcPhys.Spec.Faults;

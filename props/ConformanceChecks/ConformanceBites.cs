@@ -1,7 +1,7 @@
 using System.Numerics;
+using AcPhys.Contract;
 using AcPhys.Core;
 using AcPhys.Props.Support;
-using AcPhys.Spec.Adapters;
 using AcPhys.Spec.Faults;
 using AcPhys.Spec.Invariants;
 using AcPhys.Spec.Running;

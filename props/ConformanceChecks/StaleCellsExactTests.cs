@@ -1,6 +1,6 @@
+using AcPhys.Contract;
 using AcPhys.Core;
 using AcPhys.Props.Support;
-using AcPhys.Spec.Adapters;
 using AcPhys.Spec.Cases;
 using AcPhys.Spec.Generators;
 using AcPhys.Spec.Invariants;

@@ -1,6 +1,6 @@
+using AcPhys.Contract;
+using AcPhys.Formats.Corpus;
 using AcPhys.Props.Support;
-using AcPhys.Spec.Adapters;
-using AcPhys.Spec.Corpus;
 using AcPhys.Spec.Faults;
 using AcPhys.Spec.Invariants;
 using Xunit.Abstractions;

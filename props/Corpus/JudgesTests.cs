@@ -1,9 +1,9 @@
 using System.Numerics;
+using AcPhys.Contract;
 using AcPhys.Core;
+using AcPhys.Formats.Cases;
+using AcPhys.Formats.Corpus;
 using AcPhys.Props.Support;
-using AcPhys.Spec.Adapters;
-using AcPhys.Spec.Cases;
-using AcPhys.Spec.Corpus;
 using AcPhys.Spec.Invariants;
 using AcPhys.Spec.Judging;
 

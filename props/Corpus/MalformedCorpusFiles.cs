@@ -1,5 +1,6 @@
+using AcPhys.Formats.Cases;
+using AcPhys.Formats.Corpus;
 using AcPhys.Props.Support;
-using AcPhys.Spec.Cases;
 using AcPhys.Spec.Corpus;
 using AcPhys.Spec.Generators;
 using FsCheck;

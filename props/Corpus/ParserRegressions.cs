@@ -1,11 +1,11 @@
 using System.Text;
 using System.Text.Json;
+using AcPhys.Contract;
+using AcPhys.Formats.Corpus;
+using AcPhys.Formats.Scenes;
 using AcPhys.Props.Support;
 using AcPhys.Protocol.Messages;
 using AcPhys.Protocol.Server;
-using AcPhys.Spec.Adapters;
-using AcPhys.Spec.Corpus;
-using AcPhys.Spec.Scenes;
 using Xunit.Abstractions;
 
 namespace AcPhys.Props.Corpus;

@@ -1,7 +1,7 @@
 using System.Numerics;
+using AcPhys.Contract;
 using AcPhys.Core;
-using AcPhys.Spec.Dat;
-using AcPhys.Spec.Scenes;
+using AcPhys.Formats.Dat;
 using Xunit.Abstractions;
 
 namespace AcPhys.Props.Dat;

@@ -1,6 +1,6 @@
 using System.Text.Json;
 using System.Text.Json.Nodes;
-using AcPhys.Spec.Dat;
+using AcPhys.Formats.Dat;
 using Xunit.Abstractions;
 
 namespace AcPhys.Props.Dat;

@@ -1,5 +1,5 @@
 using System.Text;
-using AcPhys.Spec.Dat;
+using AcPhys.Formats.Dat;
 using Xunit.Abstractions;
 
 namespace AcPhys.Props.Dat;

@@ -1,6 +1,7 @@
 using System.Numerics;
+using AcPhys.Contract;
 using AcPhys.Core;
-using AcPhys.Spec.Scenes;
+using AcPhys.Formats.Scenes;
 using Xunit.Abstractions;
 
 namespace AcPhys.Props.Dat;

@@ -1,6 +1,6 @@
 using System.Text.RegularExpressions;
-using AcPhys.Spec.Dat;
-using AcPhys.Spec.Scenes;
+using AcPhys.Formats.Dat;
+using AcPhys.Formats.Scenes;
 using Xunit.Abstractions;
 
 namespace AcPhys.Props.Dat;

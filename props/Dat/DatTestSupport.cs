@@ -1,8 +1,8 @@
+using AcPhys.Contract;
+using AcPhys.Formats.Corpus;
+using AcPhys.Formats.Dat;
 using AcPhys.Props.Support;
-using AcPhys.Spec.Corpus;
-using AcPhys.Spec.Dat;
 using AcPhys.Spec.Generators;
-using AcPhys.Spec.Scenes;
 using FsCheck;
 using FsCheck.Fluent;
 

@@ -1,6 +1,6 @@
 using System.Buffers.Binary;
-using AcPhys.Spec.Dat;
-using AcPhys.Spec.Scenes;
+using AcPhys.Contract;
+using AcPhys.Formats.Dat;
 
 namespace AcPhys.Props.Dat;
 

@@ -1,6 +1,6 @@
 using System.Numerics;
+using AcPhys.Contract;
 using AcPhys.Core;
-using AcPhys.Spec.Scenes;
 using FsCheck;
 using FsCheck.Fluent;
 

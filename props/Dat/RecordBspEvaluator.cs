@@ -1,6 +1,6 @@
 using System.Numerics;
 using AcPhys.Core;
-using AcPhys.Spec.Dat;
+using AcPhys.Formats.Dat;
 
 namespace AcPhys.Props.Dat;
 

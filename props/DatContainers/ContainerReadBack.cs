@@ -1,4 +1,4 @@
-using AcPhys.Spec.Dat.Container;
+using AcPhys.Formats.Dat.Container;
 
 namespace AcPhys.Props.DatContainers;
 

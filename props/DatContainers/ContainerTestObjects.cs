@@ -1,5 +1,5 @@
+using AcPhys.Formats.Dat;
 using AcPhys.Props.Dat;
-using AcPhys.Spec.Dat;
 
 namespace AcPhys.Props.DatContainers;
 

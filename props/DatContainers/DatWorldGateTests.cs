@@ -1,6 +1,6 @@
+using AcPhys.Contract;
+using AcPhys.Formats.Dat.Container;
 using AcPhys.Props.Dat;
-using AcPhys.Spec.Adapters;
-using AcPhys.Spec.Dat.Container;
 using AcPhys.Spec.Faults;
 using AcPhys.Spec.Running;
 using Xunit.Abstractions;
@@ -24,7 +24,7 @@ public sealed class DatWorldGateTests(ITestOutputHelper output)
         output.WriteLine($"{result.Cells} cells, {result.Walks} walks, {result.Findings.Count} findings, {result.Refused.Count} refused");
         Assert.Empty(result.Refused);
         // Every portal of the corpus scenes is a wall (no floor or ceiling portal): one walk through each.
-        var scenes = DatTestSupport.CorpusSceneWalks.Select(e => e.Entry.SceneWalk!.Scene).DistinctBy(Spec.Scenes.SceneJson.WriteCompact).ToList();
+        var scenes = DatTestSupport.CorpusSceneWalks.Select(e => e.Entry.SceneWalk!.Scene).DistinctBy(AcPhys.Formats.Scenes.SceneJson.WriteCompact).ToList();
         Assert.Equal(scenes.Sum(s => s.Cells.Count), result.Cells);
         Assert.Equal(scenes.Sum(s => s.Cells.Sum(c => c.Portals.Count)), result.Walks);
         Assert.Empty(result.Findings);

@@ -1,9 +1,9 @@
 using System.Diagnostics;
 using System.Numerics;
+using AcPhys.Contract;
+using AcPhys.Formats.Dat.Container;
 using AcPhys.Props.Dat;
 using AcPhys.Props.Support;
-using AcPhys.Spec.Adapters;
-using AcPhys.Spec.Dat.Container;
 using AcPhys.Spec.Running;
 using Xunit.Abstractions;
 

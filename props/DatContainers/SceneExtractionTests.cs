@@ -1,9 +1,10 @@
+using AcPhys.Contract;
 using AcPhys.Core;
+using AcPhys.Formats.Cases;
+using AcPhys.Formats.Dat;
+using AcPhys.Formats.Dat.Container;
+using AcPhys.Formats.Scenes;
 using AcPhys.Props.Dat;
-using AcPhys.Spec.Adapters;
-using AcPhys.Spec.Cases;
-using AcPhys.Spec.Dat;
-using AcPhys.Spec.Dat.Container;
 using AcPhys.Spec.Faults;
 using AcPhys.Spec.Generators;
 using AcPhys.Spec.Invariants;

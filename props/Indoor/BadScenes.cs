@@ -1,4 +1,5 @@
 using System.Text.Json.Nodes;
+using AcPhys.Formats.Scenes;
 using AcPhys.Spec.Scenes;
 
 namespace AcPhys.Props.Indoor;

@@ -1,6 +1,5 @@
+using AcPhys.Contract;
 using AcPhys.Core;
-using AcPhys.Spec.Adapters;
-using AcPhys.Spec.Scenes;
 
 namespace AcPhys.Props.Indoor;
 

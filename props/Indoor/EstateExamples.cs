@@ -1,6 +1,7 @@
 using System.Numerics;
+using AcPhys.Formats.Cases;
+using AcPhys.Formats.Corpus;
 using AcPhys.Spec.Cases;
-using AcPhys.Spec.Corpus;
 using AcPhys.Spec.Scenes;
 
 namespace AcPhys.Props.Indoor;

@@ -1,5 +1,6 @@
 using System.Numerics;
-using AcPhys.Spec.Cases;
+using AcPhys.Contract;
+using AcPhys.Formats.Cases;
 using AcPhys.Spec.Invariants;
 using AcPhys.Spec.Scenes;
 

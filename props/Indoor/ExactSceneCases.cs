@@ -1,6 +1,7 @@
 using System.Numerics;
+using AcPhys.Contract;
 using AcPhys.Core;
-using AcPhys.Spec.Cases;
+using AcPhys.Formats.Cases;
 using AcPhys.Spec.Scenes;
 
 namespace AcPhys.Props.Indoor;

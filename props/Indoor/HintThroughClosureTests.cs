@@ -1,10 +1,10 @@
 using System.Numerics;
+using AcPhys.Contract;
 using AcPhys.Core;
+using AcPhys.Formats.Cases;
 using AcPhys.Props.Support;
-using AcPhys.Spec.Adapters;
 using AcPhys.Spec.Cases;
 using AcPhys.Spec.Invariants;
-using AcPhys.Spec.Scenes;
 
 namespace AcPhys.Props.Indoor;
 

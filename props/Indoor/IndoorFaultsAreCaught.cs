@@ -1,6 +1,6 @@
 using System.Diagnostics;
+using AcPhys.Formats.Cases;
 using AcPhys.Props.Support;
-using AcPhys.Spec.Cases;
 using AcPhys.Spec.Faults;
 using AcPhys.Spec.Invariants;
 using AcPhys.Spec.Running;

@@ -1,3 +1,4 @@
+using AcPhys.Contract;
 using AcPhys.Core;
 using AcPhys.Spec.Scenes;
 

@@ -1,5 +1,6 @@
+using AcPhys.Contract;
+using AcPhys.Formats.Cases;
 using AcPhys.Props.Support;
-using AcPhys.Spec.Adapters;
 using AcPhys.Spec.Cases;
 using AcPhys.Spec.Generators;
 using AcPhys.Spec.Invariants;

@@ -1,6 +1,6 @@
 using System.Numerics;
+using AcPhys.Contract;
 using AcPhys.Core;
-using AcPhys.Spec.Adapters;
 using AcPhys.Spec.Faults;
 using AcPhys.Spec.Scenes;
 
@@ -112,7 +112,7 @@ public sealed class PortFaultExamples
     {
         var r = ReferenceAdapter.Instance.FindCell(scene, position, spheres, CellId.None, loadCells);
         var f = PlantedFaults.Create(faultId).FindCell(scene, position, spheres, CellId.None, loadCells);
-        Assert.True(reference(r), $"reference: {Spec.Invariants.Conformance.Show(r)} → {r.Containing}, hits {r.HitsInteriorCell}");
-        Assert.True(faulty(f), $"{faultId}: {Spec.Invariants.Conformance.Show(f)} → {f.Containing}, hits {f.HitsInteriorCell}");
+        Assert.True(reference(r), $"reference: {AcPhys.Spec.Invariants.Conformance.Show(r)} → {r.Containing}, hits {r.HitsInteriorCell}");
+        Assert.True(faulty(f), $"{faultId}: {AcPhys.Spec.Invariants.Conformance.Show(f)} → {f.Containing}, hits {f.HitsInteriorCell}");
     }
 }

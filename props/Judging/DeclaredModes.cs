@@ -1,6 +1,6 @@
+using AcPhys.Contract;
 using AcPhys.Core;
 using AcPhys.Props.Support;
-using AcPhys.Spec.Adapters;
 
 namespace AcPhys.Props.Judging;
 

@@ -1,7 +1,7 @@
+using AcPhys.Contract;
 using AcPhys.Core;
+using AcPhys.Formats.Cases;
 using AcPhys.Props.Support;
-using AcPhys.Spec.Adapters;
-using AcPhys.Spec.Cases;
 using AcPhys.Spec.Faults;
 using AcPhys.Spec.Invariants;
 using AcPhys.Spec.Judging;

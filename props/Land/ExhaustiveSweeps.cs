@@ -1,4 +1,4 @@
-using AcPhys.Spec.Adapters;
+using AcPhys.Contract;
 using AcPhys.Spec.Invariants;
 using AcPhys.Spec.Running;
 using Xunit.Abstractions;

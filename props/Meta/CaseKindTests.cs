@@ -1,8 +1,8 @@
 using System.Reflection;
+using AcPhys.Contract;
+using AcPhys.Formats.Cases;
+using AcPhys.Formats.Corpus;
 using AcPhys.Props.Corpus;
-using AcPhys.Spec.Adapters;
-using AcPhys.Spec.Cases;
-using AcPhys.Spec.Corpus;
 using AcPhys.Spec.Judging;
 
 namespace AcPhys.Props.Meta;

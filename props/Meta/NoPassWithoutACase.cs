@@ -1,9 +1,8 @@
+using AcPhys.Contract;
 using AcPhys.Core;
 using AcPhys.Props.Support;
-using AcPhys.Spec.Adapters;
 using AcPhys.Spec.Invariants;
 using AcPhys.Spec.Running;
-using AcPhys.Spec.Scenes;
 
 namespace AcPhys.Props.Meta;
 

@@ -1,6 +1,6 @@
-using AcPhys.Spec.Adapters;
+using AcPhys.Contract;
 using AcPhys.Spec.Faults;
-using AcPhys.Spec.Numerics;
+using AcPhys.Studies.Numerics;
 using Xunit.Abstractions;
 
 namespace AcPhys.Props.Numerics;

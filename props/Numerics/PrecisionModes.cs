@@ -1,7 +1,7 @@
+using AcPhys.Contract;
 using AcPhys.Core;
-using AcPhys.Spec.Adapters;
-using AcPhys.Spec.Invariants;
-using AcPhys.Spec.Numerics;
+using AcPhys.Studies.Invariants;
+using AcPhys.Studies.Numerics;
 using Xunit.Abstractions;
 
 namespace AcPhys.Props.Numerics;
@@ -27,7 +27,7 @@ public sealed class PrecisionModes(ITestOutputHelper output)
     [Fact(DisplayName = "NUMERICS: the tie-band example of docs/numerics.md §1 differs in float32 and not in double")]
     public void TieBandExample()
     {
-        var query = new AcPhys.Spec.Cases.OutdoorCase(new CellId(0x01000001), [new Sphere(new System.Numerics.Vector3(-48.000008f, 100.5f, 0.5f), float.Epsilon)]);
+        var query = new AcPhys.Formats.Cases.OutdoorCase(new CellId(0x01000001), [new Sphere(new System.Numerics.Vector3(-48.000008f, 100.5f, 0.5f), float.Epsilon)]);
         var f = PrecisionCheck.Compare(ReferenceAdapter.Instance, query)!;
         var d = PrecisionCheck.Compare(ReferenceAdapter.Double, query)!;
         output.WriteLine(f.Detail);

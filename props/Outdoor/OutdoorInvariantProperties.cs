@@ -1,5 +1,5 @@
+using AcPhys.Contract;
 using AcPhys.Props.Support;
-using AcPhys.Spec.Adapters;
 using AcPhys.Spec.Invariants;
 using Xunit.Abstractions;
 

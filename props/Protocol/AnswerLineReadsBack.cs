@@ -1,8 +1,8 @@
+using AcPhys.Contract;
 using AcPhys.Core;
 using AcPhys.Props.Support;
 using AcPhys.Protocol.Messages;
 using AcPhys.Protocol.Pipeline;
-using AcPhys.Spec.Adapters;
 using FsCheck;
 using FsCheck.Fluent;
 

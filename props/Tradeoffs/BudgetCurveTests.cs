@@ -1,5 +1,6 @@
 using AcPhys.Spec.Faults;
 using AcPhys.Spec.Running;
+using AcPhys.Studies.Running;
 using Xunit.Abstractions;
 
 namespace AcPhys.Props.Tradeoffs;

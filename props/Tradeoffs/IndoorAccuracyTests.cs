@@ -1,7 +1,7 @@
 using System.Numerics;
 using AcPhys.Core;
-using AcPhys.Spec.Numerics;
 using AcPhys.Spec.Scenes;
+using AcPhys.Studies.Numerics;
 using Xunit.Abstractions;
 
 namespace AcPhys.Props.Tradeoffs;

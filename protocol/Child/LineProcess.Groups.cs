@@ -1,6 +1,6 @@
 using System.Globalization;
 using System.Runtime.InteropServices;
-using AcPhys.Spec.Adapters;
+using AcPhys.Contract;
 
 namespace AcPhys.Protocol.Child;
 
@@ -91,7 +91,7 @@ internal sealed partial class LineProcess : IDisposable
             return;
         }
 
-        line = AcPhys.Spec.Values.InputQuote.Line(line, MaxStderrChars); // the child's text: no raw control characters, no endless line (issue 28)
+        line = AcPhys.Formats.Values.InputQuote.Line(line, MaxStderrChars); // the child's text: no raw control characters, no endless line (issue 28)
         tail.Enqueue(line);
         while (tail.Count > TailLines && tail.TryDequeue(out _))
         {

@@ -2,8 +2,8 @@ using System.Collections.Concurrent;
 using System.Diagnostics;
 using System.Globalization;
 using System.Text;
+using AcPhys.Contract;
 using AcPhys.Protocol.Messages;
-using AcPhys.Spec.Adapters;
 
 namespace AcPhys.Protocol.Child;
 

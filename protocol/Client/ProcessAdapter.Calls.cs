@@ -1,9 +1,9 @@
 using System.Text.Json;
+using AcPhys.Contract;
 using AcPhys.Core;
+using AcPhys.Formats.Values;
 using AcPhys.Protocol.Child;
 using AcPhys.Protocol.Messages;
-using AcPhys.Spec.Adapters;
-using AcPhys.Spec.Values;
 
 namespace AcPhys.Protocol.Client;
 

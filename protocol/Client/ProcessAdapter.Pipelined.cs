@@ -1,8 +1,8 @@
 using System.Runtime.ExceptionServices;
+using AcPhys.Contract;
+using AcPhys.Formats.Values;
 using AcPhys.Protocol.Messages;
 using AcPhys.Protocol.Pipeline;
-using AcPhys.Spec.Adapters;
-using AcPhys.Spec.Values;
 
 namespace AcPhys.Protocol.Client;
 

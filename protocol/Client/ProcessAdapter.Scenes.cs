@@ -1,8 +1,9 @@
 using System.Runtime.CompilerServices;
 using System.Text.Json;
+using AcPhys.Contract;
 using AcPhys.Core;
+using AcPhys.Formats.Scenes;
 using AcPhys.Protocol.Messages;
-using AcPhys.Spec.Scenes;
 
 namespace AcPhys.Protocol.Client;
 

@@ -1,10 +1,9 @@
+using AcPhys.Contract;
 using AcPhys.Core;
+using AcPhys.Formats.Values;
 using AcPhys.Protocol.Child;
 using AcPhys.Protocol.Messages;
 using AcPhys.Protocol.Pipeline;
-using AcPhys.Spec.Adapters;
-using AcPhys.Spec.Scenes;
-using AcPhys.Spec.Values;
 
 namespace AcPhys.Protocol.Client;
 

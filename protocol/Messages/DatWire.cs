@@ -1,7 +1,8 @@
 using System.Text.Json;
-using AcPhys.Spec.Dat;
-using AcPhys.Spec.Scenes;
-using AcPhys.Spec.Values;
+using AcPhys.Contract;
+using AcPhys.Formats.Dat;
+using AcPhys.Formats.Scenes;
+using AcPhys.Formats.Values;
 
 namespace AcPhys.Protocol.Messages;
 

@@ -29,7 +29,7 @@ public static class LineLimit
             return bytes;
         }
 
-        problem = $"{Variable}='{AcPhys.Spec.Values.InputQuote.Brief(text)}': expected a number of bytes, 1 to 1073741824";
+        problem = $"{Variable}='{AcPhys.Formats.Values.InputQuote.Brief(text)}': expected a number of bytes, 1 to 1073741824";
         return BoundedLineReader.DefaultMaxBytes;
     }
 }

@@ -1,5 +1,5 @@
+using AcPhys.Contract;
 using AcPhys.Core;
-using AcPhys.Spec.Adapters;
 
 namespace AcPhys.Protocol.Messages;
 

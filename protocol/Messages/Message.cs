@@ -1,5 +1,5 @@
 using System.Text.Json;
-using AcPhys.Spec.Adapters;
+using AcPhys.Contract;
 
 namespace AcPhys.Protocol.Messages;
 

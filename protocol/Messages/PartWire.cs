@@ -50,7 +50,7 @@ public static class PartWire
             throw new WireException($"field \"{name}\" must be an array of parts");
         }
 
-        if (AcPhys.Spec.Values.PartBounds.CountProblem(array.GetArrayLength()) is string count)
+        if (AcPhys.Formats.Values.PartBounds.CountProblem(array.GetArrayLength()) is string count)
         {
             throw new WireException($"field \"{name}\": {count}");
         }
@@ -58,7 +58,7 @@ public static class PartWire
         var parts = array.EnumerateArray().Select(ReadPart).ToArray();
         for (int i = 0; i < parts.Length; i++)
         {
-            if (AcPhys.Spec.Values.PartBounds.Problem(parts[i], parts[0]) is var (field, problem))
+            if (AcPhys.Formats.Values.PartBounds.Problem(parts[i], parts[0]) is var (field, problem))
             {
                 throw new WireException($"field \"{name}[{i}].{(field == "radius" ? "r" : field)}\": {problem}"); // bounded work (issue 28)
             }

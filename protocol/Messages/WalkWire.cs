@@ -1,8 +1,8 @@
 using System.Globalization;
 using System.Numerics;
 using System.Text.Json;
+using AcPhys.Contract;
 using AcPhys.Protocol.Client;
-using AcPhys.Spec.Adapters;
 
 namespace AcPhys.Protocol.Messages;
 
@@ -54,7 +54,7 @@ public static class WalkWire
     /// <param name="scene">The scene the request names, already resolved (null for open land).</param>
     /// <returns>The walk.</returns>
     /// <exception cref="WireException">A field is missing or malformed.</exception>
-    public static WalkRequest ReadFields(JsonElement request, AcPhys.Spec.Scenes.Scene? scene)
+    public static WalkRequest ReadFields(JsonElement request, AcPhys.Contract.Scene? scene)
     {
         var cell = Wire.ReadCell(request, "cell");
         var origin = Wire.ReadVector(request, "origin");

@@ -86,7 +86,7 @@ public static partial class Wire
     /// </summary>
     /// <param name="w">The writer.</param>
     /// <param name="r">The answer.</param>
-    public static void WriteFindCell(Utf8JsonWriter w, AcPhys.Spec.Adapters.FindCellResult r)
+    public static void WriteFindCell(Utf8JsonWriter w, AcPhys.Contract.FindCellResult r)
     {
         WriteCells(w, "cells", r.Cells);
         if (r.Containing.IsNone)
@@ -119,7 +119,7 @@ public static partial class Wire
     /// <param name="a">The answer object.</param>
     /// <returns>The answer.</returns>
     /// <exception cref="WireException">A field is malformed, or <c>loaded</c> is not parallel to <c>cells</c>.</exception>
-    public static AcPhys.Spec.Adapters.FindCellResult ReadFindCell(JsonElement a)
+    public static AcPhys.Contract.FindCellResult ReadFindCell(JsonElement a)
     {
         var cells = ReadCells(a, "cells");
         bool[]? loaded = null;
@@ -138,7 +138,7 @@ public static partial class Wire
         }
 
         bool? hits = a.TryGetProperty("hits_interior_cell", out var h) && h.ValueKind != JsonValueKind.Null ? ReadBool(a, "hits_interior_cell") : null;
-        return new AcPhys.Spec.Adapters.FindCellResult(cells, ReadOptionalCell(a, "containing")) { Loaded = loaded, HitsInteriorCell = hits };
+        return new AcPhys.Contract.FindCellResult(cells, ReadOptionalCell(a, "containing")) { Loaded = loaded, HitsInteriorCell = hits };
     }
 
     /// <summary>
@@ -292,7 +292,7 @@ public static partial class Wire
         return v.ValueKind == JsonValueKind.String ? v.GetString()! : throw new WireException($"field \"{name}\" must be a string, got {Show(v)}");
     }
 
-    /// <summary>Reads spheres <c>[{x,y,z,r}]</c> by the shared rules (<see cref="AcPhys.Spec.Values.SphereList"/>: empty allowed, at most 10,000; <see cref="AcPhys.Spec.Values.SphereRadius"/>), as corpus files read a walk's body.</summary>
+    /// <summary>Reads spheres <c>[{x,y,z,r}]</c> by the shared rules (<see cref="AcPhys.Formats.Values.SphereList"/>: empty allowed, at most 10,000; <see cref="AcPhys.Formats.Values.SphereRadius"/>), as corpus files read a walk's body.</summary>
     /// <param name="obj">The object.</param>
     /// <param name="name">The property name.</param>
     /// <returns>The spheres.</returns>
@@ -304,7 +304,7 @@ public static partial class Wire
             throw new WireException($"field \"{name}\" must be an array of {{x,y,z,r}}");
         }
 
-        Refuse(AcPhys.Spec.Values.SphereList.Problem(array.GetArrayLength(), min: 0), name);
+        Refuse(AcPhys.Formats.Values.SphereList.Problem(array.GetArrayLength(), min: 0), name);
         var spheres = new Sphere[array.GetArrayLength()];
         int i = 0;
         foreach (var s in array.EnumerateArray())
@@ -316,7 +316,7 @@ public static partial class Wire
             }
 
             float r = FloatAt(s, "r", name, i);
-            if (AcPhys.Spec.Values.SphereRadius.Problem(r) is { } bad)
+            if (AcPhys.Formats.Values.SphereRadius.Problem(r) is { } bad)
             {
                 Refuse(bad, $"{name}[{i}].r");
             }
@@ -328,14 +328,14 @@ public static partial class Wire
         return spheres;
     }
 
-    /// <summary>Reads a sphere radius field by the shared rule (<see cref="AcPhys.Spec.Values.SphereRadius"/>: finite, ≥ 0).</summary>
+    /// <summary>Reads a sphere radius field by the shared rule (<see cref="AcPhys.Formats.Values.SphereRadius"/>: finite, ≥ 0).</summary>
     /// <param name="obj">The object.</param>
     /// <param name="name">The property name.</param>
     /// <returns>The radius.</returns>
     public static float ReadRadius(JsonElement obj, string name)
     {
         float r = ReadFloat(obj, name);
-        Refuse(AcPhys.Spec.Values.SphereRadius.Problem(r), name);
+        Refuse(AcPhys.Formats.Values.SphereRadius.Problem(r), name);
         return r;
     }
 
@@ -362,7 +362,7 @@ public static partial class Wire
     internal static bool TryReadFloat(JsonElement obj, string name, out float value)
     {
         value = 0;
-        return obj.TryGetProperty(name, out var v) && AcPhys.Spec.Values.Float32Json.TryRead(v, nonFiniteNames: true, out value, out _);
+        return obj.TryGetProperty(name, out var v) && AcPhys.Formats.Values.Float32Json.TryRead(v, nonFiniteNames: true, out value, out _);
     }
 
     // A float field of list[index]: read at once when it is there and well-formed; otherwise read again as before, for the message.
@@ -370,7 +370,7 @@ public static partial class Wire
         TryReadFloat(item, field, out float f) ? f : FloatValue(Field(item, field), $"{list}[{index}].{field}");
 
     private static float FloatValue(JsonElement v, string name) =>
-        AcPhys.Spec.Values.Float32Json.TryRead(v, nonFiniteNames: true, out float f, out string? problem) ? f : throw new WireException($"field \"{name}\": {problem}");
+        AcPhys.Formats.Values.Float32Json.TryRead(v, nonFiniteNames: true, out float f, out string? problem) ? f : throw new WireException($"field \"{name}\": {problem}");
 
     private static void Refuse(string? problem, string name)
     {

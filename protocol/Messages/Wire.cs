@@ -60,7 +60,7 @@ public static partial class Wire
     /// one by one, so every refusal keeps its order and words.
     /// </remarks>
     public static JsonDocument Parse(string line) =>
-        (AcPhys.Spec.Corpus.JsonStrings.MayHoldSurrogateEscape(line.AsSpan()) ? null : OnePass(() => JsonDocument.Parse(line, StrictOptions)))
+        (AcPhys.Formats.Corpus.JsonStrings.MayHoldSurrogateEscape(line.AsSpan()) ? null : OnePass(() => JsonDocument.Parse(line, StrictOptions)))
         ?? ParseChecked(line);
 
     /// <summary>Parses one message line given as valid UTF-8, exactly as <see cref="Parse(string)"/> parses its text.</summary>
@@ -68,7 +68,7 @@ public static partial class Wire
     /// <returns>The parsed document (dispose it).</returns>
     /// <exception cref="WireException">As <see cref="Parse(string)"/>.</exception>
     public static JsonDocument Parse(ReadOnlyMemory<byte> line) =>
-        (AcPhys.Spec.Corpus.JsonStrings.MayHoldSurrogateEscape(line.Span) ? null : OnePass(() => JsonDocument.Parse(line, StrictOptions)))
+        (AcPhys.Formats.Corpus.JsonStrings.MayHoldSurrogateEscape(line.Span) ? null : OnePass(() => JsonDocument.Parse(line, StrictOptions)))
         ?? ParseChecked(Encoding.UTF8.GetString(line.Span));
 
     // The one pass: the strict parse, an object, readable text; null sends the line to ParseChecked for the words.
@@ -84,7 +84,7 @@ public static partial class Wire
             return null; // not JSON, or a duplicate key: worded by ParseChecked
         }
 
-        if (doc.RootElement.ValueKind == JsonValueKind.Object && AcPhys.Spec.Corpus.JsonStrings.FirstUnreadable(doc.RootElement, "$") is null)
+        if (doc.RootElement.ValueKind == JsonValueKind.Object && AcPhys.Formats.Corpus.JsonStrings.FirstUnreadable(doc.RootElement, "$") is null)
         {
             return doc;
         }
@@ -116,16 +116,16 @@ public static partial class Wire
             throw new WireException($"expected a JSON object, got {kind}");
         }
 
-        if (AcPhys.Spec.Corpus.JsonStrings.FirstUnreadable(doc.RootElement, "$") is { } bad)
+        if (AcPhys.Formats.Corpus.JsonStrings.FirstUnreadable(doc.RootElement, "$") is { } bad)
         {
             doc.Dispose();
             throw new WireException($"{bad}: not valid text (a lone UTF-16 surrogate escape)");
         }
 
-        if (AcPhys.Spec.Corpus.JsonKeys.FirstDuplicate(doc.RootElement) is { } duplicate)
+        if (AcPhys.Formats.Corpus.JsonKeys.FirstDuplicate(doc.RootElement) is { } duplicate)
         {
             doc.Dispose();
-            throw new WireException(AcPhys.Spec.Corpus.JsonKeys.Message(duplicate));
+            throw new WireException(AcPhys.Formats.Corpus.JsonKeys.Message(duplicate));
         }
 
         return doc;
@@ -133,8 +133,8 @@ public static partial class Wire
 
     /// <summary>Shows a JSON value briefly, for messages.</summary>
     /// <param name="v">The value.</param>
-    /// <returns>At most 80 characters of its text (<see cref="AcPhys.Spec.Values.InputQuote"/>).</returns>
-    public static string Show(JsonElement v) => AcPhys.Spec.Values.InputQuote.Json(v);
+    /// <returns>At most 80 characters of its text (<see cref="AcPhys.Formats.Values.InputQuote"/>).</returns>
+    public static string Show(JsonElement v) => AcPhys.Formats.Values.InputQuote.Json(v);
 
     /// <summary>Cuts a text to a length, for messages.</summary>
     /// <param name="text">The text.</param>
@@ -142,7 +142,7 @@ public static partial class Wire
     /// <returns>The text, cut with an ellipsis when longer.</returns>
     public static string Brief(string text, int max)
     {
-        text = AcPhys.Spec.Values.InputQuote.Escape(text); // the peer's text never reaches a console or report raw (issue 28)
+        text = AcPhys.Formats.Values.InputQuote.Escape(text); // the peer's text never reaches a console or report raw (issue 28)
         return text.Length <= max ? text : text[..max] + "...";
     }
 

@@ -1,8 +1,8 @@
 using System.Diagnostics;
+using AcPhys.Contract;
+using AcPhys.Formats.Values;
 using AcPhys.Protocol.Child;
 using AcPhys.Protocol.Messages;
-using AcPhys.Spec.Adapters;
-using AcPhys.Spec.Values;
 
 namespace AcPhys.Protocol.Pipeline;
 

@@ -1,8 +1,8 @@
 using System.Collections.Concurrent;
 using System.Diagnostics;
+using AcPhys.Contract;
 using AcPhys.Protocol.Child;
 using AcPhys.Protocol.Messages;
-using AcPhys.Spec.Adapters;
 
 namespace AcPhys.Protocol.Pipeline;
 

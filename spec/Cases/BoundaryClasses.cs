@@ -1,4 +1,5 @@
 using AcPhys.Core;
+using AcPhys.Formats.Cases;
 
 namespace AcPhys.Spec.Cases;
 

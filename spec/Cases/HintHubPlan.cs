@@ -1,5 +1,7 @@
 using System.Numerics;
+using AcPhys.Contract;
 using AcPhys.Core;
+using AcPhys.Formats.Cases;
 using AcPhys.Spec.Scenes;
 
 namespace AcPhys.Spec.Cases;

@@ -1,4 +1,6 @@
+using AcPhys.Contract;
 using AcPhys.Core;
+using AcPhys.Formats.Cases;
 using AcPhys.Spec.Faults;
 using AcPhys.Spec.Scenes;
 

@@ -1,3 +1,5 @@
+using AcPhys.Formats.Cases;
+
 namespace AcPhys.Spec.Cases;
 
 /// <summary>

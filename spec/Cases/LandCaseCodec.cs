@@ -1,5 +1,6 @@
 using System.Buffers.Binary;
 using AcPhys.Core;
+using AcPhys.Formats.Cases;
 
 namespace AcPhys.Spec.Cases;
 

@@ -1,5 +1,6 @@
 using System.Numerics;
 using AcPhys.Core;
+using AcPhys.Formats.Cases;
 
 namespace AcPhys.Spec.Cases;
 

@@ -1,4 +1,5 @@
 using System.Buffers.Binary;
+using AcPhys.Formats.Cases;
 using AcPhys.Spec.Generators;
 using AcPhys.Spec.Scenes;
 

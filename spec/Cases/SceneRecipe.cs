@@ -1,6 +1,7 @@
 using System.Globalization;
 using System.Numerics;
 using AcPhys.Core;
+using AcPhys.Formats.Cases;
 using AcPhys.Spec.Scenes;
 
 namespace AcPhys.Spec.Cases;

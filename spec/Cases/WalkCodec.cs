@@ -1,6 +1,7 @@
 using System.Buffers.Binary;
 using System.Numerics;
 using AcPhys.Core;
+using AcPhys.Formats.Cases;
 
 namespace AcPhys.Spec.Cases;
 

@@ -1,6 +1,7 @@
 using System.Numerics;
+using AcPhys.Contract;
 using AcPhys.Core;
-using AcPhys.Spec.Adapters;
+using AcPhys.Formats.Cases;
 
 namespace AcPhys.Spec.Cases;
 
@@ -46,7 +47,7 @@ public static class WalkRunner
     /// <param name="scene">The scene, or null for open land.</param>
     /// <param name="loadCells">True to ask each step as a movement transition.</param>
     /// <returns>The request.</returns>
-    public static WalkRequest Request(Walk walk, Scenes.Scene? scene, bool loadCells = false) =>
+    public static WalkRequest Request(Walk walk, AcPhys.Contract.Scene? scene, bool loadCells = false) =>
         new(scene, walk.StartCell, walk.Start, [.. walk.Body.Select(b => new Sphere(b.Offset, b.Radius))], walk.Steps) { LoadCells = loadCells };
 
     /// <summary>

@@ -1,5 +1,6 @@
 using System.Security.Cryptography;
 using System.Text;
+using AcPhys.Formats.Corpus;
 using AcPhys.Spec.Invariants;
 
 namespace AcPhys.Spec.Corpus;

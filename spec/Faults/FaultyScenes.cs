@@ -1,4 +1,4 @@
-using AcPhys.Spec.Scenes;
+using AcPhys.Contract;
 
 namespace AcPhys.Spec.Faults;
 

@@ -1,4 +1,4 @@
-using AcPhys.Spec.Adapters;
+using AcPhys.Contract;
 
 namespace AcPhys.Spec.Faults;
 

@@ -1,8 +1,7 @@
 using System.Numerics;
 using System.Runtime.CompilerServices;
+using AcPhys.Contract;
 using AcPhys.Core;
-using AcPhys.Spec.Adapters;
-using AcPhys.Spec.Scenes;
 
 namespace AcPhys.Spec.Faults;
 

@@ -1,3 +1,4 @@
+using AcPhys.Formats.Cases;
 using AcPhys.Spec.Cases;
 using FsCheck;
 using FsCheck.Fluent;

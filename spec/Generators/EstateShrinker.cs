@@ -1,4 +1,5 @@
 using System.Numerics;
+using AcPhys.Formats.Cases;
 using AcPhys.Spec.Cases;
 using AcPhys.Spec.Scenes;
 

@@ -1,5 +1,5 @@
 using AcPhys.Core;
-using AcPhys.Spec.Cases;
+using AcPhys.Formats.Cases;
 
 namespace AcPhys.Spec.Generators;
 

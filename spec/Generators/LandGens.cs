@@ -1,4 +1,5 @@
 using AcPhys.Core;
+using AcPhys.Formats.Cases;
 using AcPhys.Spec.Cases;
 using FsCheck;
 using FsCheck.Fluent;

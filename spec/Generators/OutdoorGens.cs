@@ -1,5 +1,6 @@
 using System.Numerics;
 using AcPhys.Core;
+using AcPhys.Formats.Cases;
 using AcPhys.Spec.Cases;
 using FsCheck;
 using FsCheck.Fluent;

@@ -1,6 +1,6 @@
 using System.Numerics;
 using AcPhys.Core;
-using AcPhys.Spec.Cases;
+using AcPhys.Formats.Cases;
 
 namespace AcPhys.Spec.Generators;
 

@@ -1,6 +1,6 @@
 using System.Numerics;
 using AcPhys.Core;
-using AcPhys.Spec.Cases;
+using AcPhys.Formats.Cases;
 using FsCheck;
 using FsCheck.Fluent;
 

@@ -1,5 +1,5 @@
 using System.Numerics;
-using AcPhys.Spec.Cases;
+using AcPhys.Formats.Cases;
 
 namespace AcPhys.Spec.Generators;
 

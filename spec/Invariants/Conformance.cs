@@ -1,7 +1,7 @@
 using System.Collections.Concurrent;
+using AcPhys.Contract;
 using AcPhys.Core;
 using AcPhys.Core.Text;
-using AcPhys.Spec.Adapters;
 
 namespace AcPhys.Spec.Invariants;
 

@@ -1,7 +1,8 @@
+using AcPhys.Contract;
 using AcPhys.Core;
-using AcPhys.Spec.Adapters;
+using AcPhys.Formats.Cases;
+using AcPhys.Formats.Dat;
 using AcPhys.Spec.Cases;
-using AcPhys.Spec.Dat;
 
 namespace AcPhys.Spec.Invariants;
 
@@ -150,7 +151,7 @@ public static class ConformanceInvariants
 
     // The declared reference's answer to step i of a scene walk with its spheres moved to a probe: under stale cells the
     // earlier queries are asked first of a fresh walk session (only when the answers differ, so a conforming walk pays nothing).
-    private static FindCellResult ProbeAnswer(ICellPhysics impl, IReadOnlyList<WalkStep> trace, int i, AcPhys.Spec.Scenes.Scene scene, Sphere[] probe, bool loadCells)
+    private static FindCellResult ProbeAnswer(ICellPhysics impl, IReadOnlyList<WalkStep> trace, int i, AcPhys.Contract.Scene scene, Sphere[] probe, bool loadCells)
     {
         var reference = Conformance.WalkReferenceFor(impl);
         for (int j = 0; j < i && impl.Indoor.AceKeepsStaleCells; j++)

@@ -1,5 +1,5 @@
 using System.Numerics;
-using AcPhys.Spec.Scenes;
+using AcPhys.Contract;
 
 namespace AcPhys.Spec.Invariants;
 

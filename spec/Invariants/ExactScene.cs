@@ -1,6 +1,6 @@
 using System.Runtime.CompilerServices;
+using AcPhys.Contract;
 using AcPhys.Core;
-using AcPhys.Spec.Scenes;
 
 namespace AcPhys.Spec.Invariants;
 

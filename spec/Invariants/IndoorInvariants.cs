@@ -1,8 +1,8 @@
 using System.Numerics;
+using AcPhys.Contract;
 using AcPhys.Core;
-using AcPhys.Spec.Adapters;
+using AcPhys.Formats.Cases;
 using AcPhys.Spec.Cases;
-using AcPhys.Spec.Scenes;
 
 namespace AcPhys.Spec.Invariants;
 

@@ -1,6 +1,6 @@
-using AcPhys.Spec.Adapters;
-using AcPhys.Spec.Cases;
-using AcPhys.Spec.Corpus;
+using AcPhys.Contract;
+using AcPhys.Formats.Cases;
+using AcPhys.Formats.Corpus;
 using AcPhys.Spec.Judging;
 
 namespace AcPhys.Spec.Invariants;

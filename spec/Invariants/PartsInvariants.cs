@@ -1,5 +1,6 @@
 using System.Numerics;
-using AcPhys.Spec.Adapters;
+using AcPhys.Contract;
+using AcPhys.Formats.Cases;
 using AcPhys.Spec.Cases;
 
 namespace AcPhys.Spec.Invariants;

@@ -1,4 +1,4 @@
-using AcPhys.Spec.Cases;
+using AcPhys.Formats.Cases;
 
 namespace AcPhys.Spec.Invariants;
 

@@ -1,6 +1,7 @@
 using System.Numerics;
+using AcPhys.Contract;
 using AcPhys.Core;
-using AcPhys.Spec.Adapters;
+using AcPhys.Formats.Cases;
 using AcPhys.Spec.Cases;
 
 namespace AcPhys.Spec.Invariants;

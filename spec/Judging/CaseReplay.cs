@@ -1,5 +1,5 @@
-using AcPhys.Spec.Adapters;
-using AcPhys.Spec.Corpus;
+using AcPhys.Contract;
+using AcPhys.Formats.Corpus;
 using AcPhys.Spec.Faults;
 
 namespace AcPhys.Spec.Judging;

@@ -1,4 +1,4 @@
-using AcPhys.Spec.Cases;
+using AcPhys.Formats.Cases;
 using AcPhys.Spec.Invariants;
 
 namespace AcPhys.Spec.Judging;

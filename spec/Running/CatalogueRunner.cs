@@ -1,6 +1,6 @@
 using System.Diagnostics;
-using AcPhys.Spec.Adapters;
-using AcPhys.Spec.Cases;
+using AcPhys.Contract;
+using AcPhys.Formats.Cases;
 using AcPhys.Spec.Invariants;
 using FsCheck;
 using FsCheck.Fluent;

@@ -1,7 +1,7 @@
+using AcPhys.Contract;
 using AcPhys.Core;
-using AcPhys.Spec.Adapters;
-using AcPhys.Spec.Cases;
-using AcPhys.Spec.Dat.Container;
+using AcPhys.Formats.Cases;
+using AcPhys.Formats.Dat.Container;
 using AcPhys.Spec.Invariants;
 
 namespace AcPhys.Spec.Running;

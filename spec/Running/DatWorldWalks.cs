@@ -1,7 +1,7 @@
 using System.Numerics;
+using AcPhys.Contract;
 using AcPhys.Core;
-using AcPhys.Spec.Cases;
-using AcPhys.Spec.Scenes;
+using AcPhys.Formats.Cases;
 
 namespace AcPhys.Spec.Running;
 

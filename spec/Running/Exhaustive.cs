@@ -1,7 +1,7 @@
 using System.Diagnostics;
+using AcPhys.Contract;
 using AcPhys.Core;
-using AcPhys.Spec.Adapters;
-using AcPhys.Spec.Cases;
+using AcPhys.Formats.Cases;
 using AcPhys.Spec.Invariants;
 
 namespace AcPhys.Spec.Running;

@@ -1,7 +1,8 @@
-using AcPhys.Spec.Adapters;
-using AcPhys.Spec.Cases;
+using AcPhys.Contract;
+using AcPhys.Formats.Cases;
+using AcPhys.Formats.Corpus;
+using AcPhys.Formats.Values;
 using AcPhys.Spec.Corpus;
-using AcPhys.Spec.Values;
 
 namespace AcPhys.Spec.Running;
 

@@ -1,9 +1,8 @@
 using System.Globalization;
 using System.Numerics;
+using AcPhys.Contract;
 using AcPhys.Core;
-using AcPhys.Spec.Adapters;
-using AcPhys.Spec.Dat.Container;
-using AcPhys.Spec.Scenes;
+using AcPhys.Formats.Dat.Container;
 
 namespace AcPhys.Spec.Running;
 

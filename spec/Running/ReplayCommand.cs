@@ -1,6 +1,6 @@
 using System.Globalization;
-using AcPhys.Spec.Adapters;
-using AcPhys.Spec.Corpus;
+using AcPhys.Contract;
+using AcPhys.Formats.Corpus;
 
 namespace AcPhys.Spec.Running;
 

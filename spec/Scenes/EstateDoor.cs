@@ -1,4 +1,5 @@
 using System.Numerics;
+using AcPhys.Contract;
 
 namespace AcPhys.Spec.Scenes;
 

@@ -1,4 +1,5 @@
 using System.Numerics;
+using AcPhys.Contract;
 using AcPhys.Core;
 
 namespace AcPhys.Spec.Scenes;

@@ -1,6 +1,6 @@
 using System.Numerics;
 
-namespace AcPhys.Spec.Invariants;
+namespace AcPhys.Studies.Invariants;
 
 /// <summary>
 /// An exact rational with denominator 2¹⁴⁹ (the float32 subnormal step): every finite float32 and every integer is

@@ -1,7 +1,8 @@
 using System.Numerics;
 using AcPhys.Core;
+using AcPhys.Spec.Invariants;
 
-namespace AcPhys.Spec.Invariants;
+namespace AcPhys.Studies.Invariants;
 
 /// <summary>
 /// The outdoor query in exact rational arithmetic (<see cref="Dyadic"/>), independent of core: retail's rules

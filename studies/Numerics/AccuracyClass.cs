@@ -1,7 +1,7 @@
-using AcPhys.Spec.Cases;
+using AcPhys.Formats.Cases;
 using AcPhys.Spec.Invariants;
 
-namespace AcPhys.Spec.Numerics;
+namespace AcPhys.Studies.Numerics;
 
 /// <summary>
 /// The boundary class of an outdoor query for the accuracy tables: where the nearest boundary is that a sphere's

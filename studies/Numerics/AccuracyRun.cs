@@ -1,11 +1,12 @@
 using System.Diagnostics;
-using AcPhys.Spec.Adapters;
+using AcPhys.Contract;
+using AcPhys.Formats.Cases;
 using AcPhys.Spec.Cases;
 using AcPhys.Spec.Generators;
 using FsCheck;
 using FsCheck.Fluent;
 
-namespace AcPhys.Spec.Numerics;
+namespace AcPhys.Studies.Numerics;
 
 /// <summary>One row of the accuracy table: a case source and a boundary class.</summary>
 /// <param name="Source">Where the queries came from.</param>

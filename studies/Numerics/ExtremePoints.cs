@@ -1,7 +1,7 @@
 using AcPhys.Core;
 using AcPhys.Spec.Cases;
 
-namespace AcPhys.Spec.Numerics;
+namespace AcPhys.Studies.Numerics;
 
 /// <summary>
 /// The finite point sets of issue #8's extremes, enumerated whole: every 24 m and 192 m line of the map ± 1..4 ULP

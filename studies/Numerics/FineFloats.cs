@@ -1,8 +1,8 @@
 using System.Numerics;
 using AcPhys.Core;
-using AcPhys.Spec.Cases;
+using AcPhys.Formats.Cases;
 
-namespace AcPhys.Spec.Numerics;
+namespace AcPhys.Studies.Numerics;
 
 /// <summary>
 /// Outdoor queries with full 24-bit float32 mantissas (the suite's generators use a 2⁻¹⁰ m grid, where float32 is

@@ -1,8 +1,8 @@
 using System.Numerics;
+using AcPhys.Contract;
 using AcPhys.Core;
-using AcPhys.Spec.Scenes;
 
-namespace AcPhys.Spec.Numerics;
+namespace AcPhys.Studies.Numerics;
 
 /// <summary>
 /// The boundary class of an indoor query for the AABB-vs-BSP table: where the body is relative to the scene's cells,

@@ -1,14 +1,15 @@
 using System.Diagnostics;
 using System.Numerics;
+using AcPhys.Contract;
 using AcPhys.Core;
-using AcPhys.Spec.Adapters;
+using AcPhys.Formats.Cases;
 using AcPhys.Spec.Cases;
 using AcPhys.Spec.Generators;
 using AcPhys.Spec.Scenes;
 using FsCheck;
 using FsCheck.Fluent;
 
-namespace AcPhys.Spec.Numerics;
+namespace AcPhys.Studies.Numerics;
 
 /// <summary>One row of the indoor accuracy table: a source, a room shape and a boundary class.</summary>
 /// <param name="Source">Where the queries came from.</param>

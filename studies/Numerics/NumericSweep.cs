@@ -1,11 +1,12 @@
 using System.Collections.Concurrent;
 using System.Diagnostics;
+using AcPhys.Contract;
 using AcPhys.Core;
-using AcPhys.Spec.Adapters;
-using AcPhys.Spec.Cases;
+using AcPhys.Formats.Cases;
 using AcPhys.Spec.Invariants;
+using AcPhys.Studies.Invariants;
 
-namespace AcPhys.Spec.Numerics;
+namespace AcPhys.Studies.Numerics;
 
 /// <summary>The outcome of a numeric sweep.</summary>
 /// <param name="Domain">What was swept.</param>

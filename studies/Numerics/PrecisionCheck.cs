@@ -1,9 +1,9 @@
+using AcPhys.Contract;
 using AcPhys.Core;
-using AcPhys.Spec.Adapters;
-using AcPhys.Spec.Cases;
-using AcPhys.Spec.Invariants;
+using AcPhys.Formats.Cases;
+using AcPhys.Studies.Invariants;
 
-namespace AcPhys.Spec.Numerics;
+namespace AcPhys.Studies.Numerics;
 
 /// <summary>How one implementation's answer to an outdoor query compares with the exact answer.</summary>
 /// <param name="CellsDiffer">The cell sets differ (as sets).</param>

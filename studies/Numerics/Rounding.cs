@@ -1,7 +1,8 @@
 using AcPhys.Core;
 using AcPhys.Spec.Invariants;
+using AcPhys.Studies.Invariants;
 
-namespace AcPhys.Spec.Numerics;
+namespace AcPhys.Studies.Numerics;
 
 /// <summary>
 /// Names the float32 roundings of retail's outdoor math that a query actually meets: the places where the float32
@@ -21,7 +22,7 @@ public static class Rounding
     /// <summary>Returns the roundings a query meets, in the order above (spheres up to the first off the map).</summary>
     /// <param name="c">The query.</param>
     /// <returns>The distinct rounding names; empty when every float32 step of the query is exact.</returns>
-    public static IReadOnlyList<string> Of(Cases.OutdoorCase c)
+    public static IReadOnlyList<string> Of(AcPhys.Formats.Cases.OutdoorCase c)
     {
         var found = new List<string>(3);
         foreach (var s in c.Spheres)

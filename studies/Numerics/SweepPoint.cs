@@ -1,6 +1,6 @@
 using AcPhys.Core;
 
-namespace AcPhys.Spec.Numerics;
+namespace AcPhys.Studies.Numerics;
 
 /// <summary>One point of a numeric sweep: a position's cell id and a block-frame point in that id's frame.</summary>
 /// <param name="Cell">The position's cell id.</param>
@@ -9,5 +9,5 @@ namespace AcPhys.Spec.Numerics;
 public readonly record struct SweepPoint(CellId Cell, float X, float Y)
 {
     /// <inheritdoc/>
-    public override string ToString() => $"cell={Cell} x={Cases.FloatText.Format(X)} y={Cases.FloatText.Format(Y)}";
+    public override string ToString() => $"cell={Cell} x={AcPhys.Formats.Cases.FloatText.Format(X)} y={AcPhys.Formats.Cases.FloatText.Format(Y)}";
 }

@@ -1,7 +1,7 @@
 using AcPhys.Core;
-using AcPhys.Spec.Invariants;
+using AcPhys.Studies.Invariants;
 
-namespace AcPhys.Spec.Numerics;
+namespace AcPhys.Studies.Numerics;
 
 /// <summary>Re-base exactness over one binade of block-frame coordinates, enumerated whole.</summary>
 /// <param name="Low">Lower end of |v|, metres.</param>

@@ -1,9 +1,10 @@
 using System.Diagnostics;
-using AcPhys.Spec.Adapters;
+using AcPhys.Contract;
 using AcPhys.Spec.Faults;
 using AcPhys.Spec.Invariants;
+using AcPhys.Spec.Running;
 
-namespace AcPhys.Spec.Running;
+namespace AcPhys.Studies.Running;
 
 /// <summary>When one seed first caught one planted fault.</summary>
 /// <param name="Fault">The fault id.</param>

@@ -1,6 +1,6 @@
 using System.Buffers.Binary;
 
-namespace AcPhys.Spec.Dat.Container;
+namespace AcPhys.Formats.Dat.Container;
 
 /// <summary>
 /// Reads one object through its block chain (dat-container.md "Block chains"): each block starts with the offset of the

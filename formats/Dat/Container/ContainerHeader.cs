@@ -1,6 +1,6 @@
 using System.Buffers.Binary;
 
-namespace AcPhys.Spec.Dat.Container;
+namespace AcPhys.Formats.Dat.Container;
 
 /// <summary>
 /// The header of a dat container ("DiskFileInfo_t", dat-container.md "Header"), at byte offset 0x140: fifteen u32 words,

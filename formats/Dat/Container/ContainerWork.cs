@@ -1,4 +1,4 @@
-namespace AcPhys.Spec.Dat.Container;
+namespace AcPhys.Formats.Dat.Container;
 
 /// <summary>
 /// What a container reader has done: blocks and directory nodes read, bytes fetched. Tests bound a hostile file's cost by

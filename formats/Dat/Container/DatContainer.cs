@@ -1,6 +1,6 @@
 using System.Globalization;
 
-namespace AcPhys.Spec.Dat.Container;
+namespace AcPhys.Formats.Dat.Container;
 
 /// <summary>
 /// A dat container opened read-only (dat-container.md; docs/dat-container.md): the header and the whole directory are

@@ -1,6 +1,6 @@
 using System.Globalization;
 
-namespace AcPhys.Spec.Dat.Container;
+namespace AcPhys.Formats.Dat.Container;
 
 /// <summary>
 /// A dat container (docs/dat-container.md) that cannot be read: truncated, a block chain that loops or runs past the

@@ -1,6 +1,6 @@
 using System.Buffers.Binary;
 
-namespace AcPhys.Spec.Dat.Container;
+namespace AcPhys.Formats.Dat.Container;
 
 /// <summary>Which database a container is (written into the header's DataSet; the reader does not check it).</summary>
 public enum DatSet

@@ -1,4 +1,4 @@
-namespace AcPhys.Spec.Dat.Container;
+namespace AcPhys.Formats.Dat.Container;
 
 /// <summary>A world on disk: a cell database (landblocks, LandblockInfo, env cells) and a portal database (Environments), opened read-only.</summary>
 public sealed class DatWorld : IDisposable

@@ -1,4 +1,4 @@
-namespace AcPhys.Spec.Dat.Container;
+namespace AcPhys.Formats.Dat.Container;
 
 /// <summary>One entry of a directory node (dat-container.md "Directory"): 6 × u32.</summary>
 /// <param name="Flags">Flags (unused by ACE).</param>

@@ -1,6 +1,6 @@
 using System.Buffers.Binary;
 
-namespace AcPhys.Spec.Dat.Container;
+namespace AcPhys.Formats.Dat.Container;
 
 /// <summary>
 /// A directory node (dat-container.md "Directory"): 62 branch offsets, an entry count, room for 61 entries. A node whose

@@ -1,6 +1,6 @@
 using Microsoft.Win32.SafeHandles;
 
-namespace AcPhys.Spec.Dat.Container;
+namespace AcPhys.Formats.Dat.Container;
 
 /// <summary>Positioned reads of a container's bytes: a file (never loaded whole) or a buffer in memory.</summary>
 public interface IBlockSource : IDisposable

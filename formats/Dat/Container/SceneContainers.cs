@@ -1,7 +1,8 @@
+using AcPhys.Contract;
 using AcPhys.Core;
-using AcPhys.Spec.Scenes;
+using AcPhys.Formats.Scenes;
 
-namespace AcPhys.Spec.Dat.Container;
+namespace AcPhys.Formats.Dat.Container;
 
 /// <summary>
 /// Writes scenes as a dat world: their records (<see cref="DatSceneWriter"/>) split into a cell and a portal container

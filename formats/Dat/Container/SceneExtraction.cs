@@ -1,8 +1,9 @@
 using System.Globalization;
+using AcPhys.Contract;
 using AcPhys.Core;
-using AcPhys.Spec.Scenes;
+using AcPhys.Formats.Scenes;
 
-namespace AcPhys.Spec.Dat.Container;
+namespace AcPhys.Formats.Dat.Container;
 
 /// <summary>Why an env cell is in an extracted scene.</summary>
 public enum KeepReason

@@ -1,7 +1,7 @@
 using System.Globalization;
 using AcPhys.Core;
 
-namespace AcPhys.Spec.Dat.Container;
+namespace AcPhys.Formats.Dat.Container;
 
 /// <summary>
 /// Where a walk happens in a dat world: a landblock and, optionally, a point (x, y in that block's frame, metres) and a
