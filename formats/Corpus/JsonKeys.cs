@@ -6,7 +6,7 @@ namespace AcPhys.Formats.Corpus;
 /// Finds a key given twice in one JSON object. System.Text.Json keeps the last silently, so a duplicated <c>kind</c> once
 /// surfaced as a misleading "missing" elsewhere (issue 19); corpus files, scene files and protocol requests refuse it.
 /// </summary>
-public static class JsonKeys
+internal static class JsonKeys
 {
     /// <summary>Returns the JSON path of the first key that appears twice in one object (e.g. <c>$.walk.kind</c>), or null.</summary>
     /// <param name="element">The root to search.</param>

@@ -11,7 +11,7 @@ namespace AcPhys.Formats.Corpus;
 /// first being the anchor, <c>{"cell","origin":{"x","y","z"},"rotation":{"w","x","y","z"},"min":{…},"max":{…},"radius","always2d"}</c>,
 /// floats as round-trip text. Every value must be finite: a parts file is an object's real parts.
 /// </summary>
-public static class PartsJson
+internal static class PartsJson
 {
     /// <summary>Largest number of parts a file may hold (bounded input).</summary>
     public const int MaxParts = AcPhys.Formats.Values.PartBounds.MaxParts;

@@ -11,7 +11,7 @@ namespace AcPhys.Formats.Corpus;
 /// as it was asked, the start cell any 32-bit id and every number any float32 (NaN and infinities as strings), so a
 /// generated query from id 0, a malformed id or a non-finite centre is stored as found.
 /// </summary>
-public static class QueryJson
+internal static class QueryJson
 {
     /// <summary>Writes the <c>query</c> member.</summary>
     /// <param name="w">The writer, inside the entry object.</param>

@@ -6,7 +6,7 @@ namespace AcPhys.Formats.Values;
 /// The rule for a corpus entry's <c>catches</c> (the planted faults its case catches) wherever one is read: at most
 /// <see cref="Max"/> names, as many as there could be faults and more; two million once took 3.5 GB (issue 28).
 /// </summary>
-public static class CatchList
+internal static class CatchList
 {
     /// <summary>The most fault names one entry may list.</summary>
     public const int Max = 256;

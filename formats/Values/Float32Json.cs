@@ -8,7 +8,7 @@ namespace AcPhys.Formats.Values;
 /// answers; issue 19 "one validator"): a JSON number rounded once to float32, which must stay inside the float32 range,
 /// or one of the strings <c>"NaN"</c>, <c>"Infinity"</c>, <c>"-Infinity"</c> where the format allows non-finite values.
 /// </summary>
-public static class Float32Json
+internal static class Float32Json
 {
     /// <summary>The problem text of a JSON number outside the float32 range (e.g. <c>1e39</c>).</summary>
     public const string Overflow = "number overflows float32";

@@ -9,7 +9,7 @@ namespace AcPhys.Formats.Values;
 /// never finished (issue 28). The bounds hold every retail object and every generated case with room to spare: a
 /// landblock is 192 m, generated boxes and radii are at most 15 m, origins within [−30, 222] m, one block.
 /// </summary>
-public static class PartBounds
+internal static class PartBounds
 {
     /// <summary>The most parts one query may hold.</summary>
     public const int MaxParts = 256;

@@ -8,7 +8,7 @@ namespace AcPhys.Formats.Values;
 /// be a cell the scene holds. A walk from an undeclared env cell checked nothing: every invariant was VACUOUS and the
 /// run passed (issue 28).
 /// </summary>
-public static class SceneWalkStart
+internal static class SceneWalkStart
 {
     /// <summary>Returns what is wrong with a scene walk's start cell, or null when it is valid.</summary>
     /// <param name="scene">The scene.</param>

@@ -4,7 +4,7 @@ namespace AcPhys.Formats.Values;
 /// The rule for a list of spheres wherever one is read (a walk's body, a protocol request's <c>spheres</c>): at most
 /// <see cref="Max"/> of them; empty where the query then reads the position's own point (facts §3.3 step 3, issue 18).
 /// </summary>
-public static class SphereList
+internal static class SphereList
 {
     /// <summary>The most spheres one list may hold (bounded input).</summary>
     public const int Max = 10_000;

@@ -10,7 +10,7 @@ namespace AcPhys.Formats.Values;
 /// stderr at exit how long they spent in each stage and how often. Off, a stage costs one branch.
 /// </summary>
 /// <remarks>Stages may nest (a request line's build includes its scene's records); the table says which.</remarks>
-public static class WireProfile
+internal static class WireProfile
 {
     private static readonly ConcurrentDictionary<string, long[]> Totals = new(StringComparer.Ordinal);
 

@@ -12,7 +12,7 @@ namespace AcPhys.Protocol.Child;
 /// A line ends at <c>\n</c>; a <c>\r</c> before it is dropped, as <see cref="TextReader.ReadLine"/> does for
 /// <c>\r\n</c>. Invalid UTF-8 becomes U+FFFD. A UTF-8 byte order mark at the very start is skipped.
 /// </para></remarks>
-public sealed class BoundedLineReader
+internal sealed class BoundedLineReader
 {
     /// <summary>The default limit: 1 MiB per line.</summary>
     public const int DefaultMaxBytes = 1 << 20;

@@ -4,7 +4,7 @@ using AcPhys.Protocol.Messages;
 namespace AcPhys.Protocol.Child;
 
 /// <summary>A protocol peer sent a line longer than the limit (<see cref="BoundedLineReader"/>); the message names the limit, never the line.</summary>
-public sealed class LineTooLongException : Exception
+internal sealed class LineTooLongException : Exception
 {
     /// <summary>Initializes a new instance.</summary>
     /// <param name="limit">The limit in bytes.</param>

@@ -4,7 +4,7 @@ namespace AcPhys.Protocol.Client;
 /// An implementation answered <c>{"error": ...}</c> to an operation it announced. The operations are total, so this is
 /// a finding (the invariant reports it as a violation), not a tool error.
 /// </summary>
-public sealed class ImplementationErrorException : Exception
+internal sealed class ImplementationErrorException : Exception
 {
     /// <summary>Initializes a new instance.</summary>
     /// <param name="message">The op and the implementation's error text.</param>

@@ -8,7 +8,7 @@ namespace AcPhys.Protocol.Messages;
 /// The encoding of a part for the optional <c>outside_cells_parts</c> extension:
 /// <c>{cell, origin:{x,y,z}, rotation:{x,y,z,w}, min:{x,y,z}, max:{x,y,z}, r, always2d}</c>.
 /// </summary>
-public static class PartWire
+internal static class PartWire
 {
     /// <summary>Writes parts as an array.</summary>
     /// <param name="w">The writer.</param>

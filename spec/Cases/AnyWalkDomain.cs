@@ -6,7 +6,7 @@ using FsCheck.Fluent;
 namespace AcPhys.Spec.Cases;
 
 /// <summary>The domain of both kinds of walk: open-land walks (one part in three) and scene walks, each with its own shrinker and classes.</summary>
-public sealed class AnyWalkDomain : ICaseDomain<AnyWalk>
+internal sealed class AnyWalkDomain : ICaseDomain<AnyWalk>
 {
     /// <summary>Gets the instance.</summary>
     public static AnyWalkDomain Instance { get; } = new();

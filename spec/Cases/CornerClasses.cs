@@ -1,7 +1,7 @@
 namespace AcPhys.Spec.Cases;
 
 /// <summary>Case classes of issue 27's corner recipes (near-touch spheres, load hints ahead in the closure).</summary>
-public static class CornerClasses
+internal static class CornerClasses
 {
     /// <summary>Returns the classes of a recipe.</summary>
     /// <param name="r">The recipe.</param>

@@ -7,7 +7,7 @@ using AcPhys.Spec.Scenes;
 namespace AcPhys.Spec.Cases;
 
 /// <summary>The distribution classes of an estate walk (shown by the verify table and FsCheck's Collect).</summary>
-public static class EstateClasses
+internal static class EstateClasses
 {
     /// <summary>Gets every estate class tag, in report order.</summary>
     public static IReadOnlyList<string> All { get; } =

@@ -11,7 +11,7 @@ namespace AcPhys.Spec.Cases;
 /// from the stairwell; or from the lead-in dungeon in the next block. Points pass only through door and wall
 /// midpoints, so the walk never crosses a wall without a portal.
 /// </summary>
-public static class EstateRoute
+internal static class EstateRoute
 {
     /// <summary>Returns the start cell and the route's points in the start cell's block frame.</summary>
     /// <param name="r">The recipe.</param>

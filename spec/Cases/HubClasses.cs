@@ -7,7 +7,7 @@ using AcPhys.Spec.Scenes;
 namespace AcPhys.Spec.Cases;
 
 /// <summary>The distribution classes of a hub walk (<see cref="HubPlan"/>).</summary>
-public static class HubClasses
+internal static class HubClasses
 {
     /// <summary>Gets every hub class tag, in report order.</summary>
     public static IReadOnlyList<string> All { get; } = ["see:blind-neighbour", "filter:mid-removal", "filter:recheck-order"];

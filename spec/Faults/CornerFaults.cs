@@ -10,7 +10,7 @@ namespace AcPhys.Spec.Faults;
 /// straddle (−R ≤ d ≤ R) and a strict BSP bound (Outside iff d &lt; −R) differ from retail only at the exact float32 tie,
 /// which FIND-CELL-CONFORMANCE excuses in scenes by design (a probe 8 ulps away explains it; docs/conformance.md).
 /// </summary>
-public static class CornerFaults
+internal static class CornerFaults
 {
     /// <summary>Neighbour test padded by EPS.</summary>
     public static readonly PlantedFault NeighbourPaddedEps = new(

@@ -7,7 +7,7 @@ namespace AcPhys.Spec.Faults;
 /// of up to 8 entries (filling each hole with the last entry that will be kept; a two-pointer partition), so they are
 /// not separate faults.
 /// </summary>
-public static class FilterOrderFaults
+internal static class FilterOrderFaults
 {
     /// <summary>Order-preserving filter.</summary>
     public static readonly PlantedFault StableOrder = new(

@@ -4,7 +4,7 @@ namespace AcPhys.Spec.Faults;
 /// Planted faults of a port's indoor transit (issue #15): each is one defect a port's maintainers plausibly write in
 /// find_cell_list, portal transit, building entry or the cell volumes, run by <see cref="FaultySceneQuery"/>.
 /// </summary>
-public static class IndoorPortFaults
+internal static class IndoorPortFaults
 {
     /// <summary>Neighbour tested in the walked cell's frame.</summary>
     public static readonly PlantedFault NeighbourWrongFrame = new(

@@ -9,7 +9,7 @@ namespace AcPhys.Spec.Generators;
 /// Issue 27's two indoor corners: near-touch spheres (facts §6.10: +EPS for portal planes, +0.01 inside the BSP sphere
 /// test, none for the neighbour and building callers) and load hints early in the transit closure (facts §4 step 4a).
 /// </summary>
-public static class CornerGens
+internal static class CornerGens
 {
     /// <summary>Gets near-touch plans: a neighbour's volume, a building's room, an exit plane or a load-hint plane.</summary>
     public static Gen<NearTouchPlan> NearTouches { get; } =

@@ -6,7 +6,7 @@ namespace AcPhys.Spec.Generators;
 /// Shrinks issue 27's corner recipes toward the smallest scene that still shows the corner: the near-touch geometry
 /// (target, threshold mesh, gaps) and the hint-ahead layout are kept; cells, flips, sizes and the start go.
 /// </summary>
-public static class CornerShrinker
+internal static class CornerShrinker
 {
     /// <summary>Returns simpler recipes.</summary>
     /// <param name="r">The recipe.</param>

@@ -13,7 +13,7 @@ namespace AcPhys.Spec.Generators;
 /// rooms or outdoors along a facade; placed anywhere,
 /// across a block line or at a four-block corner; bodies of 1–3 spheres of different radii.
 /// </summary>
-public static class EstateGens
+internal static class EstateGens
 {
     /// <summary>Gets estate plans.</summary>
     public static Gen<EstatePlan> Plans { get; } =

@@ -10,7 +10,7 @@ namespace AcPhys.Spec.Generators;
 /// no storey, stairwell, vestibule, notches, sealed walls or unloaded room; shared frames (one frame per building, no tilt, yaw 0);
 /// a row; plain portal encodings; fewer and equal spheres.
 /// </summary>
-public static class EstateShrinker
+internal static class EstateShrinker
 {
     /// <summary>Returns simpler estate recipes.</summary>
     /// <param name="r">A recipe with an estate.</param>

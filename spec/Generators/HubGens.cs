@@ -13,7 +13,7 @@ namespace AcPhys.Spec.Generators;
 /// at a fraction of the radius from both inner walls: the body reaches all four quadrants (and, with a low storey,
 /// the quadrants above).
 /// </summary>
-public static class HubGens
+internal static class HubGens
 {
     /// <summary>Gets hub plans.</summary>
     public static Gen<HubPlan> Plans { get; } =

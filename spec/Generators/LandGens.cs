@@ -11,7 +11,7 @@ namespace AcPhys.Spec.Generators;
 /// float32 neighbours (±1..4 ULP), the EPS snap band and its edges, negatives, map edges, huge magnitudes,
 /// NaN/±Inf/−0/subnormals, 0xFF block bytes and malformed low words.
 /// </summary>
-public static class LandGens
+internal static class LandGens
 {
     /// <summary>Gets block-frame coordinates.</summary>
     public static Gen<float> Coordinates { get; } = Gen.Frequency(

@@ -5,7 +5,7 @@ using AcPhys.Formats.Cases;
 namespace AcPhys.Spec.Generators;
 
 /// <summary>Shrinks outdoor queries: fewer spheres, simpler radii, centres snapped to lines, corners and whole metres.</summary>
-public static class OutdoorShrinker
+internal static class OutdoorShrinker
 {
     /// <summary>Returns simpler candidates.</summary>
     /// <param name="c">The failing query.</param>

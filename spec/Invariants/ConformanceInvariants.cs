@@ -11,7 +11,7 @@ namespace AcPhys.Spec.Invariants;
 /// it declares (pick policy, documented deviations), except at numerical ties (<see cref="Conformance"/>).
 /// These catch any deviation; the other invariants say what is wrong and catch a wrong reference.
 /// </summary>
-public static class ConformanceInvariants
+internal static class ConformanceInvariants
 {
     /// <summary>FIND-CELL-CONFORMANCE.</summary>
     public static readonly Invariant<AnyWalk> FindCell = new(

@@ -14,7 +14,7 @@ namespace AcPhys.Spec.Invariants;
 /// answer (facts §5.7: every plane on the positive chain; the sphere test is "no plane has d ≤ −R"), not the exact
 /// Euclidean distance to a polyhedron.
 /// </remarks>
-public sealed class ExactCell
+internal sealed class ExactCell
 {
     private readonly double[] first; // (nx, ny, nz, d) × planes of piece 0
     private readonly double[] portals; // per portal: (nx, ny, nz, d)

@@ -9,7 +9,7 @@ namespace AcPhys.Spec.Invariants;
 /// and each building by the land cell it is attached to (its origin AdjustToOutside'd, facts §5.3; discarded when that
 /// falls in another block).
 /// </summary>
-public sealed class ExactScene
+internal sealed class ExactScene
 {
     private static readonly ConditionalWeakTable<Scene, ExactScene> Cache = [];
     private readonly Dictionary<CellId, ExactCell> cells = [];

@@ -11,7 +11,7 @@ namespace AcPhys.Spec.Invariants;
 /// a sphere centre in, whether the static visibility filter may have removed a cell, which entries were walked, and
 /// the 1 mm thresholds on the BSP sphere test.
 /// </summary>
-public static class ExactSteps
+internal static class ExactSteps
 {
     /// <summary>The BSP sphere test's radius padding (facts §5.7, BN:222), not EPS.</summary>
     public const double BspPadding = 0.01;

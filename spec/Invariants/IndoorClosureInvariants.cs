@@ -10,7 +10,7 @@ namespace AcPhys.Spec.Invariants;
 /// and sound — every env candidate has a reason. Computed from the scene description with <see cref="ExactCell"/>
 /// geometry, never from the core's transit code.
 /// </summary>
-public static class IndoorClosureInvariants
+internal static class IndoorClosureInvariants
 {
     /// <summary>NEIGHBOURS-COMPLETE.</summary>
     public static readonly Invariant<SceneWalk> NeighboursComplete = new(

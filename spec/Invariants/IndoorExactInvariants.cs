@@ -9,7 +9,7 @@ namespace AcPhys.Spec.Invariants;
 /// Indoor statements where retail is exact, beyond the closure (<see cref="IndoorClosureInvariants"/>): the interior
 /// flag, leaving through exit portals, and the first-env-wins pick. Computed from the scene description.
 /// </summary>
-public static class IndoorExactInvariants
+internal static class IndoorExactInvariants
 {
     /// <summary>HITS-INTERIOR.</summary>
     public static readonly Invariant<SceneWalk> HitsInterior = new(

@@ -7,7 +7,7 @@ using AcPhys.Spec.Cases;
 namespace AcPhys.Spec.Invariants;
 
 /// <summary>Invariants of walks in scenes: interior wins, hysteresis, portal transit, no tunnelling, visibility, and the rest (facts §4, §5).</summary>
-public static class IndoorInvariants
+internal static class IndoorInvariants
 {
     /// <summary>Depth, metres, beyond which a point is robustly inside or outside a cell (far above EPS and the BSP's 0.01 only where stated).</summary>
     public const double Margin = 1e-3;

@@ -6,7 +6,7 @@ using AcPhys.Spec.Cases;
 namespace AcPhys.Spec.Invariants;
 
 /// <summary>Invariants of the parts / bounding-box variant (facts §3.4), against an exact hull computed in double.</summary>
-public static class PartsInvariants
+internal static class PartsInvariants
 {
     /// <summary>Tolerance, metres: overlaps thinner than this are not required, cells this close to the range are allowed.</summary>
     public const double Tolerance = 1e-3;

@@ -7,7 +7,7 @@ using AcPhys.Spec.Cases;
 namespace AcPhys.Spec.Invariants;
 
 /// <summary>Invariants of walks: the containing cell keeps up with the body across every line (the #106 class).</summary>
-public static class WalkInvariants
+internal static class WalkInvariants
 {
     /// <summary>
     /// The tie band, metres: within it of a cell's square, the pick may name that cell (closed squares, last hit

@@ -17,7 +17,7 @@ public enum GridSide
 }
 
 /// <summary>The room grid of an estate: where each room sits, which rooms share a wall (a portal unless sealed), which walls are free.</summary>
-public static class EstateGrid
+internal static class EstateGrid
 {
     private static readonly (int X, int Y)[] RowAt = [(0, 0), (1, 0), (2, 0), (3, 0), (4, 0), (5, 0)];
     private static readonly (int X, int Y)[] BranchAt = [(0, 0), (1, 0), (2, 0), (1, 1), (1, -1), (2, 1)];

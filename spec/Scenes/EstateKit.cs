@@ -9,7 +9,7 @@ namespace AcPhys.Spec.Scenes;
 /// boxes, every shared wall a portal pair unless sealed, doors exit portals — then mapped into each cell's own frame
 /// (<see cref="CellPlacement"/>), so neighbouring cells have different local coordinates but the same world walls.
 /// </summary>
-public static class EstateKit
+internal static class EstateKit
 {
     /// <summary>Builds the scene and its route helpers.</summary>
     /// <param name="plan">The plan.</param>

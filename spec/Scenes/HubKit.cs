@@ -5,7 +5,7 @@ using AcPhys.Core;
 namespace AcPhys.Spec.Scenes;
 
 /// <summary>Builds hub scenes (<see cref="HubPlan"/>) and their walk: from Q0's middle to near the meeting corner and back.</summary>
-public static class HubKit
+internal static class HubKit
 {
     // Quadrant i's centre direction (signs of x and y) and its two outer walls' outward normals.
     private static readonly Vector2[] Quadrant = [new(-1, -1), new(1, -1), new(1, 1), new(-1, 1)];
