@@ -12,14 +12,20 @@ namespace AcPhys.Spec.Judging;
 /// Which declaration would make a conformance finding intended (issue #29, actionable findings; proved, issue 41): the
 /// failing case is judged again with the implementation's answers unchanged but one more documented deviation declared
 /// (each fidelity switch, then <c>ace</c>) or the other pick policy. A declaration is named only when the answers equal
-/// the reference's in that mode on the shrunk case, the original case and <see cref="FreshCases"/> fresh cases of the
-/// shrunk case's class; otherwise what differs is said. A port bug that only reorders or only adds cells is never
-/// called intended.
+/// the reference's in that mode on the shrunk case, the original case, <see cref="FreshCases"/> fresh cases of the
+/// shrunk case's class and <see cref="OtherClassCases"/> fresh cases of every other class drawn; otherwise what differs
+/// is said. The other classes matter: a port that skips the indoor visibility filter always answers like
+/// <c>ace-early-return</c> (facts §7 #7: the filter skipped after an interior pick) on every interior pick, and differs only
+/// where the pick is not interior — a declaration that explains one class but not the invariant's whole domain would
+/// excuse more than its deviation. A port bug that only reorders or only adds cells is never called intended.
 /// </summary>
 public static class IntendedUnder
 {
     /// <summary>How many fresh cases of the failing case's class a declaration must also explain.</summary>
     public const int FreshCases = 12;
+
+    /// <summary>How many fresh cases of each other class drawn a declaration must also explain.</summary>
+    public const int OtherClassCases = 2;
 
     // How many cases are drawn to find the fresh cases of one class.
     private const int Draws = 600;
@@ -54,16 +60,21 @@ public static class IntendedUnder
                     continue;
                 }
 
-                var fresh = Fresh(invariantId, cases[0]).ToList();
-                var broken = fresh.Select(c => (Case: c, Outcome: Rejudge(declared, invariantId, c))).FirstOrDefault(x => x.Outcome is { IsViolation: true });
-                if (fresh.Count > 0 && broken.Outcome is null)
+                var (same, others) = Fresh(invariantId, cases[0]);
+                var broken = same.Select(c => (Case: c, Outcome: Rejudge(declared, invariantId, c))).FirstOrDefault(x => x.Outcome is { IsViolation: true });
+                var elsewhere = broken.Outcome is null && same.Count > 0
+                    ? others.Select(c => (Case: c, Outcome: Rejudge(declared, invariantId, c))).FirstOrDefault(x => x.Outcome is { IsViolation: true })
+                    : default;
+                if (same.Count > 0 && broken.Outcome is null && elsewhere.Outcome is null)
                 {
                     return new Intent(label, null);
                 }
 
-                nearest ??= fresh.Count == 0
+                nearest ??= same.Count == 0
                     ? $"declaring {label} explains this case, but no fresh case of its class was drawn to prove it"
-                    : $"declaring {label} explains this case but not a fresh case of its class: {broken.Outcome!.Value.Message}";
+                    : broken.Outcome is { } b
+                    ? $"declaring {label} explains this case but not a fresh case of its class: {b.Message}"
+                    : $"declaring {label} explains this case and its class but not a case of another class: {elsewhere.Outcome!.Value.Message}";
             }
             catch (AdapterFailureException)
             {
@@ -90,26 +101,29 @@ public static class IntendedUnder
         yield return ($"\"pick\": \"{PickNames.Of(other)}\"", new OpsOffered(impl, impl.Ops) { Pick = other });
     }
 
-    // Fresh cases of the shrunk case's class (its domain's primary class), drawn with a fixed seed.
-    private static IEnumerable<AnyCase> Fresh(string id, AnyCase like)
+    // Fresh cases of the shrunk case's class (its domain's primary class) and a few of every other class drawn, with a
+    // fixed seed.
+    private static (List<AnyCase> Same, List<AnyCase> Others) Fresh(string id, AnyCase like)
     {
         const ulong seed = 0x41_41_41_41UL; // fixed: the same finding is explained the same way every run
         return (id, like) switch
         {
-            ("FIND-CELL-CONFORMANCE", AnyCase.WalkInScene sw) => SameClass(AnyWalkDomain.Instance, new AnyWalk(null, sw.Walk), seed).Select(w => w.Indoor is { } i ? (AnyCase)i : w.Outdoor!),
-            ("FIND-CELL-CONFORMANCE", AnyCase.OutdoorWalk w) => SameClass(AnyWalkDomain.Instance, new AnyWalk(w.Walk, null), seed).Select(x => x.Indoor is { } i ? (AnyCase)i : x.Outdoor!),
-            ("FIND-CELL-QUERY-CONFORMANCE" or "OUTSIDE-CELLS-CONFORMANCE", AnyCase.OutdoorQuery q) => SameClass(OutdoorDomain.Instance, q.Query, seed).Select(c => (AnyCase)c),
-            ("LANDDEFS-CONFORMANCE", AnyCase.LandQuery l) => SameClass(LandDomain.Instance, l.Case, seed).Select(c => (AnyCase)c),
-            _ => [],
+            ("FIND-CELL-CONFORMANCE", AnyCase.WalkInScene sw) => Spread(AnyWalkDomain.Instance, new AnyWalk(null, sw.Walk), seed, w => w.Indoor is { } i ? (AnyCase)i : w.Outdoor!),
+            ("FIND-CELL-CONFORMANCE", AnyCase.OutdoorWalk w) => Spread(AnyWalkDomain.Instance, new AnyWalk(w.Walk, null), seed, x => x.Indoor is { } i ? (AnyCase)i : x.Outdoor!),
+            ("FIND-CELL-QUERY-CONFORMANCE" or "OUTSIDE-CELLS-CONFORMANCE", AnyCase.OutdoorQuery q) => Spread(OutdoorDomain.Instance, q.Query, seed, c => c),
+            ("LANDDEFS-CONFORMANCE", AnyCase.LandQuery l) => Spread(LandDomain.Instance, l.Case, seed, c => c),
+            _ => ([], []),
         };
     }
 
-    private static IEnumerable<T> SameClass<T>(ICaseDomain<T> domain, T like, ulong seed)
+    private static (List<AnyCase> Same, List<AnyCase> Others) Spread<T>(ICaseDomain<T> domain, T like, ulong seed, Func<T, AnyCase> asCase)
     {
         string cls = domain.Primary(like);
-        return Gen.Sample(domain.Arbitrary.Generator, Draws, new Rnd(seed, 0x9E3779B97F4A7C15UL), 50)
-            .Where(c => domain.Primary(c) == cls)
-            .Take(FreshCases);
+        var drawn = Gen.Sample(domain.Arbitrary.Generator, Draws, new Rnd(seed, 0x9E3779B97F4A7C15UL), 50).ToList();
+        var same = drawn.Where(c => domain.Primary(c) == cls).Take(FreshCases).Select(asCase).ToList();
+        var others = drawn.GroupBy(domain.Primary).Where(g => g.Key != cls).OrderBy(g => g.Key, StringComparer.Ordinal)
+            .SelectMany(g => g.Take(OtherClassCases)).Select(asCase).ToList();
+        return (same, others);
     }
 
     private static AcPhys.Spec.Invariants.Outcome? Rejudge(ICellPhysics impl, string id, AnyCase c) => (id, c) switch
