@@ -179,7 +179,7 @@ internal static class IndoorPortFaults
     internal static Func<Core.ICellVolume, IReadOnlyList<Core.ConvexPiece>, Core.ICellVolume>? VolumeOf(PlantedFault fault) => fault.Id switch
     {
         "close-is-outside" => (v, pieces) => new CloseIsOutsideVolume(v, pieces[0]),
-        "sphere-test-unpadded" => (v, pieces) => new UnpaddedSphereVolume(v, pieces[0]),
+        "sphere-test-unpadded" => (v, pieces) => new ChainSphereVolume(v, pieces[0], ChainSphereVolume.Unpadded),
         "walks-negative-children" => (v, pieces) => new PieceUnionVolume(v, pieces),
         _ => CornerFaults.VolumeOf(fault) ?? InteriorFaults.VolumeOf(fault),
     };

@@ -56,7 +56,7 @@ public static class InteriorFaults
     /// <returns>The decorator, or null.</returns>
     internal static Func<ICellVolume, IReadOnlyList<ConvexPiece>, ICellVolume>? VolumeOf(PlantedFault fault) => fault.Id switch
     {
-        "bsp-bound-strict" => (v, pieces) => new StrictBoundSphereVolume(v, pieces[0]),
+        "bsp-bound-strict" => (v, pieces) => new ChainSphereVolume(v, pieces[0], ChainSphereVolume.StrictBound),
         _ => null,
     };
 
