@@ -90,6 +90,8 @@ internal static class FactsMatrix
         new("§5.3, §4 step 4a", "every walked land cell's building is asked (row houses sharing a wall)", "interiors:row-houses", "fault:building-centre-cell-only", Walks),
         new("§5.3, §4 step 4a", "every walked land cell's building is asked (a closet with its own door)", "interiors:closet-door", "fault:building-centre-cell-only", Walks),
         new("§5.3, §4 step 4a", "every walked land cell's building is asked (doors a body-width apart)", "interiors:doors-apart", "fault:building-centre-cell-only", Walks),
+        new("§5.3, §4 step 4a", "building entry is asked from indoors too (leaving a house by its door into the neighbour's room)", "interiors:row-houses", "fault:building-entry-outdoors-only", Walks),
+        new("§5.3, §4 step 4a", "building entry is asked from indoors too (leaving a house by its door into the neighbour's room)", "interiors:closet-door", "fault:building-entry-outdoors-only", Walks),
         new("§5.7, pitfall 16", "positive chain only", "walk:door-room-second-piece", "fault:walks-negative-children", Walks),
         new("§5.9", "swap-removal order after the filter", "filter:mid-removal", "fault:filter-stable-order", Walks),
         new("§5.9, §4 step 5", "the entry swapped into a hole is tested too", "filter:mid-removal", "fault:filter-skips-swapped-in", Walks),

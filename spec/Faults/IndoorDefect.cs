@@ -98,4 +98,7 @@ internal enum IndoorDefect
 
     /// <summary>Issue 41: building entry asks only the building of the land cell under sphere 0's centre.</summary>
     BuildingCentreCellOnly,
+
+    /// <summary>Issue 41: building entry is asked only when the query starts outdoors.</summary>
+    BuildingEntryOutdoorsOnly,
 }

@@ -37,8 +37,15 @@ public static class InteriorFaults
         "facts §5.3, §4 step 4a: LandCell.find_transit_cells runs for every land cell in the array and asks its SortCell's building; a port asked the building \"the body is in\", so leaving one house through its door while touching the neighbouring house (attached to the next land cell) misses the neighbour's room.",
         ["BUILDING-ENTRY-COMPLETE", "FIND-CELL-CONFORMANCE"]);
 
+    /// <summary>Building entry asked only when the query starts outdoors.</summary>
+    public static readonly PlantedFault BuildingEntryOutdoorsOnly = new(
+        "building-entry-outdoors-only",
+        "building entry is asked only when the position is outdoors: a body leaving one building through its door never enters the next",
+        "facts §5.3, §4 step 4a: the closure asks the building of every land cell in the array, also of land cells added through an exit portal of the building the body is in; a port reasoned \"indoors, we are already in a building\" and skipped it, so leaving one house through its door while touching the neighbour's room (row houses, doors a body-width apart) misses that room.",
+        ["BUILDING-ENTRY-COMPLETE", "FIND-CELL-CONFORMANCE"]);
+
     /// <summary>Gets every fault of this list.</summary>
-    public static IReadOnlyList<PlantedFault> All { get; } = [BspBoundStrict, ExitStraddleInclusive, HintBoundInclusive, BuildingCentreCellOnly];
+    public static IReadOnlyList<PlantedFault> All { get; } = [BspBoundStrict, ExitStraddleInclusive, HintBoundInclusive, BuildingCentreCellOnly, BuildingEntryOutdoorsOnly];
 
     /// <summary>Returns the code defect a fault of this list plants (none for another fault or a volume fault).</summary>
     /// <param name="fault">The fault.</param>
@@ -48,6 +55,7 @@ public static class InteriorFaults
         "exit-straddle-inclusive" => IndoorDefect.ExitStraddleInclusive,
         "hint-bound-inclusive" => IndoorDefect.HintBoundInclusive,
         "building-centre-cell-only" => IndoorDefect.BuildingCentreCellOnly,
+        "building-entry-outdoors-only" => IndoorDefect.BuildingEntryOutdoorsOnly,
         _ => IndoorDefect.None,
     };
 
@@ -68,6 +76,11 @@ public static class InteriorFaults
     /// <returns>False when the defect skips it.</returns>
     internal static bool AsksBuilding(CellId land, CellId position, ReadOnlySpan<Sphere> spheres, IndoorDefect defect)
     {
+        if (defect == IndoorDefect.BuildingEntryOutdoorsOnly)
+        {
+            return !position.IsIndoorByLowWord;
+        }
+
         if (defect != IndoorDefect.BuildingCentreCellOnly || spheres.IsEmpty)
         {
             return true;
