@@ -123,7 +123,7 @@ internal static class ServeCommand
             impl = new OpsOffered(impl, ParseOps(opNames));
         }
 
-        int maxLine = Impl.LineLimitSetting.Read();
+        int maxLine = Impl.LineLimitSetting.Read(AcPhys.Spec.Running.ToolEnvironment.Process);
         using var input = Console.OpenStandardInput();
         using var output = new StreamWriter(Console.OpenStandardOutput(), new UTF8Encoding(false)) { NewLine = "\n" };
         new ProtocolServer(impl) { LoadScenes = !noLoadScene, DatRecords = !noDatRecords, Walks = !noWalks, Pipeline = !noPipeline, InWorldFrame = world.On, FrameFault = frameFault }.Serve(input, output, maxLine);
