@@ -1,6 +1,6 @@
 using System.Runtime.InteropServices;
 using AcPhys.Contract;
-using AcPhys.Formats.Corpus;
+using AcPhys.Formats;
 
 namespace AcPhys.Cli;
 
@@ -120,7 +120,7 @@ internal static class Guard
             case AcPhys.Formats.Dat.Container.DatContainerException:
                 Terminal.Error(verb, error.Message);
                 return ExitCodes.BadDat;
-            case UsageException or CorpusFormatException or AcPhys.Formats.Dat.DatFormatException:
+            case UsageException or InputFormatException:
                 Terminal.Error(verb, error.Message);
                 break;
             case AdapterFailureException:

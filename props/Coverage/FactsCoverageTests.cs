@@ -1,8 +1,6 @@
 using System.Reflection;
 using System.Text;
 using AcPhys.Contract;
-using AcPhys.Core;
-using AcPhys.Props.Support;
 using AcPhys.Spec.Faults;
 using AcPhys.Spec.Invariants;
 using AcPhys.Spec.Running;

@@ -1,5 +1,6 @@
 using System.Text.Json;
 using AcPhys.Contract;
+using AcPhys.Formats;
 using AcPhys.Formats.Scenes;
 using AcPhys.Formats.Values;
 using AcPhys.Protocol.Child;
@@ -333,7 +334,7 @@ public sealed class ProtocolServer(ICellPhysics impl)
             last = new LastScene(text, scene);
             return scene;
         }
-        catch (SceneFormatException e)
+        catch (InputFormatException e)
         {
             throw new WireException("invalid scene: " + e.Message, e);
         }
