@@ -1,6 +1,6 @@
 using System.Runtime.InteropServices;
 using AcPhys.Contract;
-using AcPhys.Formats.Corpus;
+using AcPhys.Formats;
 
 namespace AcPhys.Cli;
 
@@ -120,7 +120,7 @@ internal static class Guard
             case AcPhys.Formats.Dat.Container.DatContainerException:
                 Terminal.Error(verb, error.Message);
                 return ExitCodes.BadDat;
-            case UsageException or CorpusFormatException or AcPhys.Formats.Dat.DatFormatException:
+            case UsageException or InputFormatException:
                 Terminal.Error(verb, error.Message);
                 break;
             case AdapterFailureException:
@@ -128,7 +128,7 @@ internal static class Guard
                 break;
             default:
                 // A bug of the tool: one line for a user (the exception's message cut, it may quote input), the whole trace for a developer.
-                bool debug = Environment.GetEnvironmentVariable("ACPHYS_DEBUG") is "1" or "true";
+                bool debug = AcPhys.Spec.Running.ToolEnvironment.Process.Debug;
                 Terminal.Error(verb, $"internal error: {error.GetType().Name}: {FirstLine(error.Message)}{(debug ? string.Empty : " (set ACPHYS_DEBUG=1 for the stack trace)")}");
                 if (debug)
                 {

@@ -8,14 +8,14 @@ namespace AcPhys.Cli;
 internal static class InternalErrorDrill
 {
     /// <summary>The environment variable naming the command to fail.</summary>
-    public const string Variable = "ACPHYS_INTERNAL_ERROR_DRILL";
+    public const string Variable = AcPhys.Spec.Running.ToolEnvironment.InternalErrorDrillVariable;
 
     /// <summary>Throws when the drill names <paramref name="verb"/>.</summary>
     /// <param name="verb">The command about to run.</param>
     /// <exception cref="InvalidOperationException">The drill names this command.</exception>
     public static void Check(string verb)
     {
-        if (Environment.GetEnvironmentVariable(Variable) == verb)
+        if (AcPhys.Spec.Running.ToolEnvironment.Process.InternalErrorDrill == verb)
         {
             throw new InvalidOperationException($"internal error drill ({Variable}={verb})");
         }

@@ -12,6 +12,11 @@ internal static class Program
     /// <returns>The exit code (docs/cli.md).</returns>
     public static int Main(string[] args)
     {
+        if (AcPhys.Spec.Running.ToolEnvironment.Process.WireProfile)
+        {
+            AcPhys.Formats.Values.WireProfileSwitch.Enable(); // the served path's stopwatch breakdown (docs/protocol.md, "Speed")
+        }
+
         var root = new RootCommand("acphys: verify cell-membership physics against its invariants (AcPhysVerify).")
         {
             VerifyCommand.Create(),

@@ -1,5 +1,4 @@
 using System.Diagnostics;
-using System.Globalization;
 
 namespace AcPhys.Cli;
 
@@ -12,7 +11,7 @@ namespace AcPhys.Cli;
 internal sealed class ProgressLog : IDisposable
 {
     /// <summary>The environment variable that sets the interval in seconds (default 30; tests use about 1).</summary>
-    public const string Variable = "ACPHYS_PROGRESS_SECONDS";
+    public const string Variable = AcPhys.Spec.Running.ToolEnvironment.ProgressSecondsVariable;
 
     private readonly string title;
     private readonly int total;
@@ -32,10 +31,7 @@ internal sealed class ProgressLog : IDisposable
     }
 
     /// <summary>Gets the interval between two lines.</summary>
-    public static TimeSpan Interval =>
-        double.TryParse(Environment.GetEnvironmentVariable(Variable), NumberStyles.Float, CultureInfo.InvariantCulture, out double s) && s is >= 0.1 and <= 86_400
-            ? TimeSpan.FromSeconds(s)
-            : TimeSpan.FromSeconds(30);
+    public static TimeSpan Interval => AcPhys.Spec.Running.ToolEnvironment.Process.ProgressInterval;
 
     /// <summary>Counts one finished step.</summary>
     /// <param name="what">What just finished.</param>

@@ -53,7 +53,7 @@ internal static class Terminal
         var console = AnsiConsole.Create(settings);
         if (redirected)
         {
-            console.Profile.Width = int.TryParse(Environment.GetEnvironmentVariable("ACPHYS_WIDTH"), out int w) && w > 20 ? w : RedirectedWidth;
+            console.Profile.Width = AcPhys.Spec.Running.ToolEnvironment.Process.Width ?? RedirectedWidth;
         }
 
         return console;

@@ -1,4 +1,5 @@
 using AcPhys.Contract;
+using AcPhys.Formats;
 using AcPhys.Formats.Corpus;
 using AcPhys.Formats.Scenes;
 using AcPhys.Protocol.Server;
@@ -41,7 +42,7 @@ public sealed class OneValidatorTests
         Assert.Contains(problem.Replace("\"", "\\\"", StringComparison.Ordinal), answer, StringComparison.Ordinal);
 
         // The corpus file puts y on the walk's start and r on its body sphere: the same values, the same text.
-        var e = Assert.Throws<CorpusFormatException>(() => CorpusJson.Read(WalkFile.Replace("Y", y, StringComparison.Ordinal).Replace("R", r, StringComparison.Ordinal), "bad.json"));
+        var e = Assert.Throws<InputFormatException>(() => CorpusJson.Read(WalkFile.Replace("Y", y, StringComparison.Ordinal).Replace("R", r, StringComparison.Ordinal), "bad.json"));
         Assert.Contains(problem, e.Message, StringComparison.Ordinal);
     }
 
@@ -59,7 +60,7 @@ public sealed class OneValidatorTests
         string answer = new ProtocolServer(ReferenceAdapter.Instance).Answer("""{"op":"outside_cells","cell":"0xA9B40031","spheres":[],"origin":{"x":12,"y":12,"z":0.5}}""");
         Assert.Equal("{\"cells\":[\"0xA9B40001\"]}", answer); // (12, 12) lies in cell 1 of block A9B4
 
-        var e = Assert.Throws<CorpusFormatException>(() => CorpusJson.Read(WalkFile.Replace("[{\"x\":0,\"y\":0,\"z\":0,\"r\":R}]", "[]", StringComparison.Ordinal).Replace("Y", "12", StringComparison.Ordinal), "bad.json"));
+        var e = Assert.Throws<InputFormatException>(() => CorpusJson.Read(WalkFile.Replace("[{\"x\":0,\"y\":0,\"z\":0,\"r\":R}]", "[]", StringComparison.Ordinal).Replace("Y", "12", StringComparison.Ordinal), "bad.json"));
         Assert.Contains("$.walk.body: expected an array of 1 to 10,000 spheres, got 0", e.Message, StringComparison.Ordinal);
     }
 
@@ -69,7 +70,7 @@ public sealed class OneValidatorTests
         string many = string.Join(',', Enumerable.Repeat("""{"x":1,"y":1,"z":0,"r":1}""", 10_001));
         string answer = new ProtocolServer(ReferenceAdapter.Instance).Answer("{\"op\":\"outside_cells\",\"cell\":\"0xA9B40031\",\"spheres\":[" + many + "]}");
         Assert.Contains("expected an array of 0 to 10,000 spheres, got 10,001", answer, StringComparison.Ordinal);
-        var e = Assert.Throws<CorpusFormatException>(() => CorpusJson.Read(WalkFile.Replace("[{\"x\":0,\"y\":0,\"z\":0,\"r\":R}]", "[" + many + "]", StringComparison.Ordinal).Replace("Y", "12", StringComparison.Ordinal), "bad.json"));
+        var e = Assert.Throws<InputFormatException>(() => CorpusJson.Read(WalkFile.Replace("[{\"x\":0,\"y\":0,\"z\":0,\"r\":R}]", "[" + many + "]", StringComparison.Ordinal).Replace("Y", "12", StringComparison.Ordinal), "bad.json"));
         Assert.Contains("expected an array of 1 to 10,000 spheres, got 10,001", e.Message, StringComparison.Ordinal);
     }
 
@@ -79,7 +80,7 @@ public sealed class OneValidatorTests
         string scene = SceneJson.Write(SceneKit.Cottage(new CottagePlan((0xA9 * 192.0) + 50, (0xB4 * 192.0) + 50, 0.3f, 2, 6f, 6f, 5, true, true)));
         int d = scene.IndexOf("\"d\":", StringComparison.Ordinal);
         int end = scene.IndexOfAny([',', '}'], d);
-        var e = Assert.Throws<SceneFormatException>(() => SceneJson.Read(scene[..(d + 4)] + "1e39" + scene[end..], "bad.json"));
+        var e = Assert.Throws<InputFormatException>(() => SceneJson.Read(scene[..(d + 4)] + "1e39" + scene[end..], "bad.json"));
         Assert.Matches(@"bad\.json: \$\.\S+\.d: number overflows float32$", e.Message);
     }
 }

@@ -1,4 +1,5 @@
 using System.Numerics;
+using AcPhys.Formats;
 using AcPhys.Formats.Dat;
 using AcPhys.Formats.Scenes;
 using AcPhys.Spec.Generators;
@@ -50,7 +51,7 @@ public sealed class PortalPolygonTests
         var cell = withPolygons.Cells.First(c => c.Portals.Count > 0);
         var reversed = cell with { Portals = [cell.Portals[0] with { Polygon = [.. cell.Portals[0].Polygon!.Reverse()] }, .. cell.Portals.Skip(1)] };
         var bad = withPolygons with { Cells = [.. withPolygons.Cells.Select(c => c.Id == cell.Id ? reversed : c)] };
-        var e = Assert.Throws<SceneFormatException>(() => SceneJson.Read(SceneJson.Write(bad), "reversed"));
+        var e = Assert.Throws<InputFormatException>(() => SceneJson.Read(SceneJson.Write(bad), "reversed"));
         Assert.Contains("is not the portal's plane", e.Message, StringComparison.Ordinal);
         Assert.Null(SceneJson.Read(SceneJson.Write(scene), "planes only").Cells.First(c => c.Portals.Count > 0).Portals[0].Polygon); // optional
     }

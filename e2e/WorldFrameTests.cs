@@ -78,7 +78,7 @@ public sealed class WorldFrameTests
             var origin = sent.RootElement.GetProperty("block_origin");
             Assert.Equal(192.0 * cell.BlockX, origin[0].GetDouble());
             Assert.Equal(192.0 * cell.BlockY, origin[1].GetDouble());
-            using var back = Wire.Parse(WorldFrame.ToBlock(world, WorldFrameFault.None));
+            using var back = Wire.Parse(WorldFrame.ToBlock(world));
             var sphere = Wire.ReadSpheres(back.RootElement, "spheres")[0];
             Assert.True(
                 sphere.Center.X.Equals(x) || (x == 0 && sphere.Center.X == 0),

@@ -13,13 +13,13 @@ namespace AcPhys.Xunit;
 public static class Gate
 {
     /// <summary>Gets the profile chosen by <c>ACPHYS_PROFILE</c> (pr when unset).</summary>
-    public static Profile Profile { get; } = ProfileFrom(Environment.GetEnvironmentVariable("ACPHYS_PROFILE"));
+    public static Profile Profile { get; } = ProfileFrom(ToolEnvironment.Process);
 
     // A profile without a fixed base seed (nightly) draws one per test run: every failure prints the seed that replays it.
     private static readonly ulong RunBase = Profile.BaseSeed ?? Seed.Fresh().Value;
 
     /// <summary>Gets the seed <c>ACPHYS_SEED</c> fixes for every invariant, or null.</summary>
-    public static Seed? FixedSeed { get; } = SeedFrom(Environment.GetEnvironmentVariable("ACPHYS_SEED"));
+    public static Seed? FixedSeed { get; } = SeedFrom(ToolEnvironment.Process);
 
     /// <summary>Checks one invariant against an adapter.</summary>
     /// <param name="impl">The adapter.</param>
@@ -40,11 +40,11 @@ public static class Gate
     }
 
     /// <summary>Gets the folder shrunk failing cases are written to: <c>ACPHYS_FAILURES</c>, else artifacts/failures.</summary>
-    public static string FailureFolder => Environment.GetEnvironmentVariable("ACPHYS_FAILURES") is { Length: > 0 } f ? f : Path.Combine("artifacts", "failures");
+    public static string FailureFolder => ToolEnvironment.Process.FailureFolder ?? Path.Combine("artifacts", "failures");
 
     private static string FailureText(InvariantResult result, ICellPhysics impl)
     {
-        string program = Environment.GetEnvironmentVariable("ACPHYS_COMMAND") is { Length: > 0 } p ? p : "acphys";
+        string program = ToolEnvironment.Process.Command;
         var replay = new ReplayCommand(program, Profile) { Implementation = ["--impl", impl.GetType().Assembly.Location] };
         string name = InputQuote.Line(impl.Name ?? impl.GetType().Name, 120);
         var block = FailureBlock.Of(result, impl, name, replay, FailureFolder, FinderNames.Verify);
@@ -55,11 +55,9 @@ public static class Gate
         return block.Text + Environment.NewLine + $"  {"or",-10} {env}dotnet test --filter \"DisplayName~{result.Invariant.Id}\"";
     }
 
-    private static Profile ProfileFrom(string? name) =>
-        string.IsNullOrEmpty(name) ? Profile.Pr
-        : Profile.Find(name) ?? throw new InvalidOperationException($"ACPHYS_PROFILE='{name}' is not a profile (pr, nightly)");
+    private static Profile ProfileFrom(ToolEnvironment settings) =>
+        settings.Problem(ToolEnvironment.ProfileVariable) is { } problem ? throw new InvalidOperationException(problem) : settings.Profile ?? Profile.Pr;
 
-    private static Seed? SeedFrom(string? text) =>
-        string.IsNullOrEmpty(text) ? null
-        : Seed.TryParse(text, out var seed) ? seed : throw new InvalidOperationException($"ACPHYS_SEED='{text}' is not seed,gamma[,size]");
+    private static Seed? SeedFrom(ToolEnvironment settings) =>
+        settings.Problem(ToolEnvironment.SeedVariable) is { } problem ? throw new InvalidOperationException(problem) : settings.Seed;
 }

@@ -1,4 +1,4 @@
-using AcPhys.Spec.Invariants;
+using AcPhys.Spec.Running;
 
 namespace AcPhys.Xunit;
 
@@ -9,21 +9,11 @@ namespace AcPhys.Xunit;
 public static class GateFloor
 {
     /// <summary>The environment variable that sets the floor for a run (it wins over the class's own).</summary>
-    public const string Variable = "ACPHYS_MIN_TESTED";
+    public const string Variable = ToolEnvironment.MinTestedVariable;
 
     /// <summary>Gets the floor <see cref="Variable"/> sets, or null when it is unset.</summary>
     /// <returns>The floor, or null.</returns>
     /// <exception cref="InvalidOperationException">The value is not a whole number from 1 to the catalogue's size.</exception>
-    public static int? FromEnvironment()
-    {
-        string? text = Environment.GetEnvironmentVariable(Variable);
-        if (string.IsNullOrEmpty(text))
-        {
-            return null;
-        }
-
-        return int.TryParse(text, out int n) && n >= 1 && n <= InvariantCatalogue.All.Count
-            ? n
-            : throw new InvalidOperationException($"{Variable}='{text}' must be a whole number from 1 to {InvariantCatalogue.All.Count} (the catalogue's invariants)");
-    }
+    public static int? FromEnvironment() =>
+        ToolEnvironment.Process.Problem(Variable) is { } problem ? throw new InvalidOperationException(problem) : ToolEnvironment.Process.MinTested;
 }

@@ -56,8 +56,7 @@ internal static class BiteCommand
         return command;
     }
 
-    private static string DefaultProfile() =>
-        Environment.GetEnvironmentVariable("ACPHYS_PROFILE") is { Length: > 0 } fromEnvironment ? fromEnvironment : "pr";
+    private static string DefaultProfile() => ToolEnvironment.Process.ProfileName ?? "pr";
 
     private static int Run(string profileName, int seeds, string? markdownPath, string? jsonPath, string[] bugIds, string[] exceptIds, string[] args)
     {

@@ -2,7 +2,7 @@ using System.CommandLine;
 using System.Runtime.InteropServices;
 using AcPhys.Cli.Fuzz;
 using AcPhys.Cli.Impl;
-using AcPhys.Formats.Corpus;
+using AcPhys.Formats;
 using AcPhys.Fuzz.Targets;
 using AcPhys.Spec.Faults;
 
@@ -197,7 +197,7 @@ internal static class FuzzCommand
         {
             return new Campaign(settings(), cts.Token).Run();
         }
-        catch (Exception e) when (e is UsageException or CorpusFormatException or IOException or UnauthorizedAccessException
+        catch (Exception e) when (e is UsageException or InputFormatException or IOException or UnauthorizedAccessException
             or AcPhys.Spec.Adapters.AdapterLoadException or AcPhys.Contract.AdapterFailureException)
         {
             Terminal.Error("fuzz", e.Message);

@@ -1,6 +1,7 @@
 using System.CommandLine;
 using System.Text.Json;
 using AcPhys.Contract;
+using AcPhys.Formats;
 using AcPhys.Formats.Corpus;
 using AcPhys.Formats.Dat;
 using AcPhys.Formats.Scenes;
@@ -64,7 +65,7 @@ internal static class SceneCommand
             {
                 scene = SceneJson.Read(text, path);
             }
-            catch (SceneFormatException e)
+            catch (InputFormatException e)
             {
                 throw new UsageException(e.Message, e);
             }

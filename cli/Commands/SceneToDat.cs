@@ -1,5 +1,6 @@
 using System.CommandLine;
 using AcPhys.Contract;
+using AcPhys.Formats;
 using AcPhys.Formats.Corpus;
 using AcPhys.Formats.Dat.Container;
 using AcPhys.Formats.Scenes;
@@ -69,7 +70,7 @@ internal static class SceneToDat
                 ? CorpusJson.Read(text, path).SceneWalk?.Scene ?? throw new UsageException($"{path}: $.kind: scene to-dat takes scene walks")
                 : SceneJson.Read(text, path);
         }
-        catch (SceneFormatException e)
+        catch (InputFormatException e)
         {
             throw new UsageException(e.Message, e);
         }

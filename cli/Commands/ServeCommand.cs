@@ -1,7 +1,6 @@
 using System.CommandLine;
 using System.Text;
 using AcPhys.Contract;
-using AcPhys.Protocol.Messages;
 using AcPhys.Protocol.Server;
 using AcPhys.Spec.Faults;
 
@@ -39,7 +38,7 @@ internal static class ServeCommand
         var noPipeline = new Option<bool>("--no-pipeline") { Description = "Do not announce pipeline: the tool waits for each answer before the next request (as a server without it)." };
         var announceRetail = new Option<bool>("--announce-retail")
         {
-            Description = "Serve the --pick / --fidelity behaviour but announce retail in hello: a port deviating without declaring it (the suite must fail it; docs/facts-coverage.md).",
+            Description = "Serve the --pick / --fidelity behaviour but announce retail in hello: a port deviating without declaring it (the suite must fail it; docs/facts-coverage.md). With --fidelity ace it is the planted fault ace-announced-retail.",
         };
         var ops = new Option<string>("--ops")
         {
@@ -49,7 +48,7 @@ internal static class ServeCommand
         var worldFrame = new Option<bool>("--world-frame") { Description = "Declare \"frame\": \"world\" and take every point in world coordinates, as a port that keeps one world frame (docs/protocol.md, \"World frame\")." };
         var worldFrameFault = new Option<string>("--world-frame-fault")
         {
-            Description = "With --world-frame, convert with a planted shim bug: swapped-block-axes (the suite must fail it).",
+            Description = "With --world-frame, convert with a planted shim bug: swapped-block-axes (the suite must fail it; an alias of --fault world-frame-swapped-axes).",
             HelpName = "FAULT",
         };
         var command = new Command("serve", "Serve the reference core over protocol v1 on stdin/stdout (docs/protocol.md); ends at end of input.") { fault, pick, fidelity, noLoad, noDat, noWalks, noPipeline, announceRetail, ops, worldFrame, worldFrameFault };
@@ -78,10 +77,10 @@ internal static class ServeCommand
     private static int Run(string? faultId, string? pickName, string? fidelityNames, (bool NoLoadScene, bool NoDatRecords, bool NoWalks, bool NoPipeline, bool AnnounceRetail) flags, string? opNames, (bool On, string? Fault) world)
     {
         var (noLoadScene, noDatRecords, noWalks, noPipeline, announceRetail) = flags;
-        var frameFault = world.Fault switch
+        bool swappedShim = world.Fault switch
         {
-            null => WorldFrameFault.None,
-            "swapped-block-axes" when world.On => WorldFrameFault.SwappedBlockAxes,
+            null => false,
+            "swapped-block-axes" when world.On => true,
             "swapped-block-axes" => throw new UsageException("--world-frame-fault needs --world-frame"),
             _ => throw new UsageException($"unknown --world-frame-fault '{world.Fault}' (known: swapped-block-axes)"),
         };
@@ -113,9 +112,16 @@ internal static class ServeCommand
             }
         }
 
+        if (swappedShim)
+        {
+            // The server converts the world frame back exactly; the planted shim then takes the wrong origin: the
+            // numbers the old shim bug gave, now the planted fault world-frame-swapped-axes.
+            impl = PortShimFaults.BehindSwappedShim(impl);
+        }
+
         if (announceRetail)
         {
-            impl = new Impl.AnnouncedRetail(impl);
+            impl = PortShimFaults.AnnouncingRetail(impl);
         }
 
         if (opNames is not null)
@@ -123,10 +129,10 @@ internal static class ServeCommand
             impl = new OpsOffered(impl, ParseOps(opNames));
         }
 
-        int maxLine = Impl.LineLimitSetting.Read();
+        int maxLine = Impl.LineLimitSetting.Read(AcPhys.Spec.Running.ToolEnvironment.Process);
         using var input = Console.OpenStandardInput();
         using var output = new StreamWriter(Console.OpenStandardOutput(), new UTF8Encoding(false)) { NewLine = "\n" };
-        new ProtocolServer(impl) { LoadScenes = !noLoadScene, DatRecords = !noDatRecords, Walks = !noWalks, Pipeline = !noPipeline, InWorldFrame = world.On, FrameFault = frameFault }.Serve(input, output, maxLine);
+        new ProtocolServer(impl) { LoadScenes = !noLoadScene, DatRecords = !noDatRecords, Walks = !noWalks, Pipeline = !noPipeline, InWorldFrame = world.On }.Serve(input, output, maxLine);
         return ExitCodes.Ok;
     }
 }

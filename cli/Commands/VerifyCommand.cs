@@ -102,7 +102,7 @@ internal static class VerifyCommand
             OutputPath.Check("--junit", parse.GetValue(junit));
             OutputPath.Check("--markdown", parse.GetValue(markdown));
             OutputPath.CheckDistinct([("--junit", parse.GetValue(junit)), ("--markdown", parse.GetValue(markdown))], parse.GetValue(implOptions.Assembly) is string dll ? [dll] : []);
-            if (Environment.GetEnvironmentVariable("ACPHYS_FAILURES") is { Length: > 0 } failures)
+            if (ToolEnvironment.Process.FailureFolder is { } failures)
             {
                 OutputPath.CheckFolder("ACPHYS_FAILURES", failures); // named by the user: a path problem is exit 3 before the run
             }
@@ -129,8 +129,7 @@ internal static class VerifyCommand
         return command;
     }
 
-    private static string DefaultProfile() =>
-        Environment.GetEnvironmentVariable("ACPHYS_PROFILE") is { Length: > 0 } fromEnvironment ? fromEnvironment : "pr";
+    private static string DefaultProfile() => ToolEnvironment.Process.ProfileName ?? "pr";
 
     private static VerifySettings WithBudget(VerifySettings settings, bool sweeps)
     {

@@ -43,7 +43,7 @@ internal sealed class Campaign(FuzzSettings s, CancellationToken stop)
         }
 
         var opened = s.Port.Command is { } cmd
-            ? PortSubject.Served(cmd, s.Port.Timeout, LineLimitSetting.Read(), line => Say("[impl] " + line))
+            ? PortSubject.Served(cmd, s.Port.Timeout, LineLimitSetting.Read(AcPhys.Spec.Running.ToolEnvironment.Process), line => Say("[impl] " + line))
             : PortSubject.InProcess(s.Port.AssemblyPath!);
         try
         {

@@ -31,7 +31,7 @@ internal sealed record ImplementationChoice(string? Command, string? AssemblyPat
     {
         if (Command is not null)
         {
-            var adapter = ProcessAdapter.Start(Command, new ProcessAdapterOptions { Timeout = Timeout, StderrSink = stderrSink, MaxLineBytes = LineLimitSetting.Read() });
+            var adapter = ProcessAdapter.Start(Command, new ProcessAdapterOptions { Timeout = Timeout, StderrSink = stderrSink, MaxLineBytes = LineLimitSetting.Read(AcPhys.Spec.Running.ToolEnvironment.Process) });
             return (adapter, adapter);
         }
 

@@ -1,3 +1,4 @@
+using AcPhys.Formats;
 using AcPhys.Formats.Corpus;
 using AcPhys.Formats.Dat;
 
@@ -14,8 +15,8 @@ internal static class CaseFiles
     /// <summary>Reads the entry.</summary>
     /// <param name="path">A corpus file or a record folder.</param>
     /// <returns>The entry.</returns>
-    /// <exception cref="CorpusFormatException">The file is not a valid corpus entry.</exception>
-    /// <exception cref="DatFormatException">The folder's records or manifest are not valid.</exception>
+    /// <exception cref="InputFormatException">The file is not a valid corpus entry.</exception>
+    /// <exception cref="InputFormatException">The folder's records or manifest are not valid.</exception>
     /// <exception cref="UsageException">The folder holds a bare scene (no walk).</exception>
     public static CorpusEntry Read(string path) => DatFolder.IsRecordFolder(path)
         ? DatFolder.ReadEntry(path) ?? throw new UsageException($"{path}: the record folder holds a scene but no walk (its manifest has no \"walk\"); nothing to replay")

@@ -10,7 +10,7 @@ namespace AcPhys.Cli.Verify;
 internal static class ReplayLine
 {
     /// <summary>Gets how to invoke the tool: <c>ACPHYS_COMMAND</c> (the <c>./acphys</c> wrapper sets it to its own path as typed), else <c>acphys</c>.</summary>
-    public static string Program => Environment.GetEnvironmentVariable("ACPHYS_COMMAND") is { Length: > 0 } p ? p : "acphys";
+    public static string Program => ToolEnvironment.Process.Command;
 
     /// <summary>Returns the replay command of a run: its profile, cases, fault and implementation words.</summary>
     /// <param name="settings">The run's settings.</param>

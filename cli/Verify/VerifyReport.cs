@@ -286,7 +286,7 @@ internal sealed class VerifyReport(VerifySettings settings, ICellPhysics impl)
     };
 
     /// <summary>Gets the folder shrunk failing cases are written to: <c>ACPHYS_FAILURES</c>, else artifacts/failures.</summary>
-    public static string FailureFolder => Environment.GetEnvironmentVariable("ACPHYS_FAILURES") is { Length: > 0 } f ? f : Path.Combine("artifacts", "failures");
+    public static string FailureFolder => ToolEnvironment.Process.FailureFolder ?? Path.Combine("artifacts", "failures");
 
     private string WholeRunReplay()
     {

@@ -12,7 +12,7 @@ namespace AcPhys.Contract;
 /// An adapter that cannot reach its implementation (a crashed or hung process) throws <see cref="AdapterFailureException"/>.
 /// <para>Three ways in: the bundled <see cref="ReferenceAdapter"/>; a .NET class implementing this interface, loaded with
 /// <c>acphys verify --impl Adapter.dll</c>; or any program speaking protocol v1 on stdin/stdout
-/// (<c>Protocol.ProcessAdapter</c> in AcPhys.Formats, <c>acphys verify --impl-cmd</c>, docs/protocol.md), whose op names are
+/// (<c>AcPhys.Protocol.Client.ProcessAdapter</c> in the AcPhys.Protocol assembly, <c>acphys verify --impl-cmd</c>, docs/protocol.md), whose op names are
 /// <see cref="OpNames"/>.</para>
 /// </remarks>
 public interface ICellPhysics

@@ -105,7 +105,7 @@ public static class CorpusJson
     /// <param name="json">The text.</param>
     /// <param name="source">A name for messages (the file path).</param>
     /// <returns>The entry.</returns>
-    /// <exception cref="CorpusFormatException">The text is not a valid corpus entry.</exception>
+    /// <exception cref="InputFormatException">The text is not a valid corpus entry.</exception>
     public static CorpusEntry Read(string json, string source)
     {
         JsonDocument doc;
@@ -115,7 +115,7 @@ public static class CorpusJson
         }
         catch (JsonException e)
         {
-            throw new CorpusFormatException($"{source}: not valid JSON: {e.Message}");
+            throw new InputFormatException($"{source}: not valid JSON: {e.Message}");
         }
 
         using (doc)
@@ -125,12 +125,12 @@ public static class CorpusJson
             if (JsonStrings.FirstUnreadable(root, "$") is { } bad)
             {
                 // Before the duplicate-key search, which reads every property name (a lone surrogate name throws).
-                throw new CorpusFormatException($"{source}: {bad}: not valid text (invalid UTF-8 or a lone UTF-16 surrogate)");
+                throw new InputFormatException($"{source}: {bad}: not valid text (invalid UTF-8 or a lone UTF-16 surrogate)");
             }
 
             if (JsonKeys.FirstDuplicate(root) is { } duplicate)
             {
-                throw new CorpusFormatException($"{source}: {JsonKeys.Message(duplicate)}");
+                throw new InputFormatException($"{source}: {JsonKeys.Message(duplicate)}");
             }
 
             Require(Str(root, "format", source) == FormatName, source, "$.format", $"expected \"{FormatName}\"");
@@ -162,15 +162,7 @@ public static class CorpusJson
             var header = new CorpusEntry { Title = title, Invariant = invariant, FoundBy = foundBy, Seed = seed, Mode = mode, Catches = catches };
             if (kind == "scene-walk")
             {
-                AcPhys.Contract.Scene scene;
-                try
-                {
-                    scene = AcPhys.Formats.Scenes.SceneJson.Read(Prop(root, "scene", source), source, "$.scene");
-                }
-                catch (AcPhys.Formats.Scenes.SceneFormatException e)
-                {
-                    throw new CorpusFormatException(e.Message, e);
-                }
+                var scene = AcPhys.Formats.Scenes.SceneJson.Read(Prop(root, "scene", source), source, "$.scene");
 
                 string? route = OptStr(root, "route", source);
                 Require(route is null or EnterAndBack, source, "$.route", $"expected \"{EnterAndBack}\" (the only route a stored scene walk names)");
@@ -214,7 +206,7 @@ public static class CorpusJson
     /// <summary>Reads a corpus file.</summary>
     /// <param name="path">The file.</param>
     /// <returns>The entry.</returns>
-    /// <exception cref="CorpusFormatException">The file cannot be read or is not valid.</exception>
+    /// <exception cref="InputFormatException">The file cannot be read or is not valid.</exception>
     public static CorpusEntry ReadFile(string path)
     {
         string text;
@@ -224,7 +216,7 @@ public static class CorpusJson
         }
         catch (Exception e) when (e is IOException or UnauthorizedAccessException)
         {
-            throw new CorpusFormatException($"{path}: cannot read: {e.Message}");
+            throw new InputFormatException($"{path}: cannot read: {e.Message}");
         }
 
         return Read(text, path);
@@ -325,7 +317,7 @@ public static class CorpusJson
     {
         if (!parent.TryGetProperty(name, out var e))
         {
-            throw new CorpusFormatException($"{source}: {at}.{name}: missing");
+            throw new InputFormatException($"{source}: {at}.{name}: missing");
         }
 
         return e;
@@ -362,7 +354,7 @@ public static class CorpusJson
         }
         catch (InvalidOperationException)
         {
-            throw new CorpusFormatException($"{source}: {path}: not valid text (invalid UTF-8 or a lone UTF-16 surrogate)");
+            throw new InputFormatException($"{source}: {path}: not valid text (invalid UTF-8 or a lone UTF-16 surrogate)");
         }
     }
 
@@ -371,7 +363,7 @@ public static class CorpusJson
     {
         if (problem is not null)
         {
-            throw new CorpusFormatException($"{source}: {path}: {problem}");
+            throw new InputFormatException($"{source}: {path}: {problem}");
         }
     }
 
@@ -379,7 +371,7 @@ public static class CorpusJson
     {
         if (!condition)
         {
-            throw new CorpusFormatException($"{source}: {path}: {message}");
+            throw new InputFormatException($"{source}: {path}: {message}");
         }
     }
 }

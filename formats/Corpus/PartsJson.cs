@@ -49,7 +49,7 @@ internal static class PartsJson
     /// <param name="e">The <c>parts</c> element.</param>
     /// <param name="source">File name for messages.</param>
     /// <returns>The query.</returns>
-    /// <exception cref="CorpusFormatException">Any defect, with its JSON path.</exception>
+    /// <exception cref="InputFormatException">Any defect, with its JSON path.</exception>
     public static PartsCase Read(JsonElement e, string source)
     {
         CorpusJson.Require(e.ValueKind == JsonValueKind.Array && e.GetArrayLength() is > 0 and <= MaxParts, source, "$.parts", $"expected an array of 1 to {MaxParts} parts (the first is the anchor)");

@@ -39,7 +39,7 @@ internal static class QueryJson
     /// <param name="e">The member's value.</param>
     /// <param name="source">The file, for messages.</param>
     /// <returns>The query.</returns>
-    /// <exception cref="CorpusFormatException">The member is malformed (the message names the path).</exception>
+    /// <exception cref="InputFormatException">The member is malformed (the message names the path).</exception>
     public static OutdoorCase Read(JsonElement e, string source)
     {
         CorpusJson.Require(e.ValueKind == JsonValueKind.Object, source, "$.query", "expected an object");

@@ -51,7 +51,7 @@ public static class WalkJson
     /// <param name="source">File name for messages.</param>
     /// <param name="minSpheres">The fewest body spheres (<see cref="AcPhys.Formats.Values.SphereList"/>): 1 for every walk file today, because the walk invariants judge sphere 0 (an empty body has no containing cell on the reference; a protocol query, by contrast, may be empty and then reads its <c>origin</c>).</param>
     /// <returns>The walk.</returns>
-    /// <exception cref="CorpusFormatException">Any defect, with its JSON path.</exception>
+    /// <exception cref="InputFormatException">Any defect, with its JSON path.</exception>
     public static Walk Read(JsonElement e, string source, int minSpheres = 1)
     {
         CorpusJson.Require(e.ValueKind == JsonValueKind.Object, source, "$.walk", "expected an object");

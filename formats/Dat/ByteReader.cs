@@ -6,7 +6,7 @@ using AcPhys.Core;
 namespace AcPhys.Formats.Dat;
 
 /// <summary>
-/// Bounded little-endian record reader. Every failure is a <see cref="DatFormatException"/> naming the record, the
+/// Bounded little-endian record reader. Every failure is a <see cref="InputFormatException"/> naming the record, the
 /// field and its byte offset; counts are checked against the remaining bytes before anything is allocated.
 /// </summary>
 /// <param name="data">The record bytes.</param>
@@ -37,14 +37,14 @@ public sealed class ByteReader(byte[] data, string kind, uint id, bool named = t
     /// <typeparam name="T">What the read returns.</typeparam>
     /// <param name="read">The read, given whether to name fields.</param>
     /// <returns>The value.</returns>
-    /// <exception cref="DatFormatException">The record is refused (the named pass's message).</exception>
+    /// <exception cref="InputFormatException">The record is refused (the named pass's message).</exception>
     public static T Strictly<T>(Func<bool, T> read)
     {
         try
         {
             return read(false);
         }
-        catch (DatFormatException)
+        catch (InputFormatException)
         {
             read(true);
             throw new InvalidOperationException("a dat record refused unnamed was accepted named: a reader names a field by a check it makes");
@@ -61,7 +61,7 @@ public sealed class ByteReader(byte[] data, string kind, uint id, bool named = t
     /// <param name="offset">Its byte offset.</param>
     /// <param name="message">The problem.</param>
     /// <returns>Never returns.</returns>
-    public DatFormatException Error(string? field, int offset, string message) =>
+    public InputFormatException Error(string? field, int offset, string message) =>
         new($"{Record}: {field} at byte {offset}: {message}");
 
     /// <summary>Refuses the record unless a condition holds.</summary>
@@ -223,5 +223,5 @@ public sealed class ByteReader(byte[] data, string kind, uint id, bool named = t
     }
 
     [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.NoInlining)]
-    private DatFormatException Ends(int n, string? field) => Error(field, Position, $"record ends ({Remaining} byte(s) left, {n} needed)");
+    private InputFormatException Ends(int n, string? field) => Error(field, Position, $"record ends ({Remaining} byte(s) left, {n} needed)");
 }

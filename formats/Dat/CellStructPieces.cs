@@ -15,7 +15,7 @@ public static class CellStructPieces
     /// <param name="root">The cell BSP.</param>
     /// <param name="where">Record and field, for messages.</param>
     /// <returns>The pieces.</returns>
-    /// <exception cref="DatFormatException">A chain does not end in a leaf, or its planes bound no convex piece.</exception>
+    /// <exception cref="InputFormatException">A chain does not end in a leaf, or its planes bound no convex piece.</exception>
     public static List<ScenePiece> Of(BspNode root, string where)
     {
         var pieces = new List<ScenePiece>();
@@ -49,25 +49,25 @@ public static class CellStructPieces
     /// <param name="polygonId">The polygon id.</param>
     /// <param name="where">Record and field, for messages.</param>
     /// <returns>The plane.</returns>
-    /// <exception cref="DatFormatException">The polygon or one of its vertices is missing, or it spans no area.</exception>
+    /// <exception cref="InputFormatException">The polygon or one of its vertices is missing, or it spans no area.</exception>
     public static CellPlane PortalPlane(CellStructRecord cs, ushort polygonId, string where)
     {
         var polygon = cs.Polygons.FirstOrDefault(p => p.Id == polygonId)
-            ?? throw new DatFormatException($"{where}: polygon {polygonId} is not in CellStruct {cs.Key}");
+            ?? throw new InputFormatException($"{where}: polygon {polygonId} is not in CellStruct {cs.Key}");
         if (!cs.PortalPolygonIds.Contains(polygonId))
         {
-            throw new DatFormatException($"{where}: polygon {polygonId} is not in CellStruct {cs.Key}'s portal polygon ids");
+            throw new InputFormatException($"{where}: polygon {polygonId} is not in CellStruct {cs.Key}'s portal polygon ids");
         }
 
         var points = new List<Vector3>();
         foreach (short id in polygon.VertexIds)
         {
             var v = cs.Vertices.FirstOrDefault(x => x.Id == (ushort)id)
-                ?? throw new DatFormatException($"{where}: polygon {polygonId} names vertex {id}, which CellStruct {cs.Key} lacks");
+                ?? throw new InputFormatException($"{where}: polygon {polygonId} names vertex {id}, which CellStruct {cs.Key} lacks");
             points.Add(v.Origin);
         }
 
-        return PolygonPlane.Of(points) ?? throw new DatFormatException($"{where}: polygon {polygonId} spans no area (no plane)");
+        return PolygonPlane.Of(points) ?? throw new InputFormatException($"{where}: polygon {polygonId} spans no area (no plane)");
     }
 
     // Whether the planes are exactly those ConvexPiece.FromBox makes for the box, in its order.
@@ -93,7 +93,7 @@ public static class CellStructPieces
         {
             planes.Add(n.Plane);
             chain.Add(n);
-            n = n.Positive ?? throw new DatFormatException($"{where}: node at byte {n.Offset} ('{BspTags.Name(n.Tag)}') ends a positive chain without a LEAF");
+            n = n.Positive ?? throw new InputFormatException($"{where}: node at byte {n.Offset} ('{BspTags.Name(n.Tag)}') ends a positive chain without a LEAF");
         }
 
         CellPlane[] own = [.. planes];
@@ -104,7 +104,7 @@ public static class CellStructPieces
         }
         catch (ArgumentException e)
         {
-            throw new DatFormatException($"{where}: the positive chain from byte {node.Offset} is no convex piece ({planes.Count} planes): {e.Message.Split(" (Parameter", 2)[0]}");
+            throw new InputFormatException($"{where}: the positive chain from byte {node.Offset} is no convex piece ({planes.Count} planes): {e.Message.Split(" (Parameter", 2)[0]}");
         }
 
         // The piece checked here is the one queried: a box's too, when its six planes are FromBox's, bit for bit (a

@@ -68,7 +68,7 @@ public static class DatFolder
     /// <summary>Reads a record folder.</summary>
     /// <param name="dir">The folder.</param>
     /// <returns>The manifest and the scene.</returns>
-    /// <exception cref="DatFormatException">Any defect: unreadable or missing files, unlisted records, bad records.</exception>
+    /// <exception cref="InputFormatException">Any defect: unreadable or missing files, unlisted records, bad records.</exception>
     public static (DatManifest Manifest, Scene Scene) Read(string dir)
     {
         string manifestPath = Path.Combine(dir, ManifestName);
@@ -78,7 +78,7 @@ public static class DatFolder
         {
             if (!listed.Contains(Path.GetFileName(file)))
             {
-                throw new DatFormatException($"{file}: a record file the manifest does not list");
+                throw new InputFormatException($"{file}: a record file the manifest does not list");
             }
         }
 
@@ -89,7 +89,7 @@ public static class DatFolder
     /// <summary>Reads a record folder as a corpus entry: a scene walk when the manifest carries one.</summary>
     /// <param name="dir">The folder.</param>
     /// <returns>The entry, or null for a bare scene (no walk).</returns>
-    /// <exception cref="DatFormatException">Any defect.</exception>
+    /// <exception cref="InputFormatException">Any defect.</exception>
     public static CorpusEntry? ReadEntry(string dir)
     {
         var (manifest, scene) = Read(dir);
@@ -116,7 +116,7 @@ public static class DatFolder
         }
         catch (Exception e) when (e is IOException or UnauthorizedAccessException)
         {
-            throw new DatFormatException($"{path}: cannot read: {e.Message}");
+            throw new InputFormatException($"{path}: cannot read: {e.Message}");
         }
     }
 
@@ -127,19 +127,19 @@ public static class DatFolder
             var info = new FileInfo(path);
             if (!info.Exists)
             {
-                throw new DatFormatException($"{path}: listed in the manifest but missing");
+                throw new InputFormatException($"{path}: listed in the manifest but missing");
             }
 
             if (info.Length > MaxRecordBytes)
             {
-                throw new DatFormatException($"{path}: {info.Length} bytes; a record is at most {MaxRecordBytes}");
+                throw new InputFormatException($"{path}: {info.Length} bytes; a record is at most {MaxRecordBytes}");
             }
 
             return File.ReadAllBytes(path);
         }
         catch (Exception e) when (e is IOException or UnauthorizedAccessException)
         {
-            throw new DatFormatException($"{path}: cannot read: {e.Message}");
+            throw new InputFormatException($"{path}: cannot read: {e.Message}");
         }
     }
 }

@@ -91,7 +91,7 @@ public static class DatManifestJson
     /// <param name="element">The manifest object.</param>
     /// <param name="source">A name for messages.</param>
     /// <returns>The manifest.</returns>
-    /// <exception cref="DatFormatException">Any defect, with its JSON path: the messages <see cref="Read(string, string)"/> gives for the same text.</exception>
+    /// <exception cref="InputFormatException">Any defect, with its JSON path: the messages <see cref="Read(string, string)"/> gives for the same text.</exception>
     public static DatManifest Read(JsonElement element, string source)
     {
         // Parse once (issue 26): a manifest inside an already parsed request is read in place. Only one nested beyond
@@ -101,21 +101,14 @@ public static class DatManifestJson
             return Read(element.GetRawText(), source);
         }
 
-        try
-        {
-            return Parse(element, source);
-        }
-        catch (CorpusFormatException e)
-        {
-            throw new DatFormatException(e.Message, e);
-        }
+        return Parse(element, source);
     }
 
     /// <summary>Reads a manifest from its JSON text (manifest.json).</summary>
     /// <param name="json">The text.</param>
     /// <param name="source">A name for messages.</param>
     /// <returns>The manifest.</returns>
-    /// <exception cref="DatFormatException">Not JSON, or any defect.</exception>
+    /// <exception cref="InputFormatException">Not JSON, or any defect.</exception>
     public static DatManifest Read(string json, string source)
     {
         JsonDocument doc;
@@ -125,19 +118,12 @@ public static class DatManifestJson
         }
         catch (JsonException e)
         {
-            throw new DatFormatException($"{source}: not valid JSON: {e.Message}");
+            throw new InputFormatException($"{source}: not valid JSON: {e.Message}");
         }
 
         using (doc)
         {
-            try
-            {
-                return Parse(doc.RootElement, source);
-            }
-            catch (CorpusFormatException e)
-            {
-                throw new DatFormatException(e.Message, e);
-            }
+            return Parse(doc.RootElement, source);
         }
     }
 
@@ -182,7 +168,7 @@ public static class DatManifestJson
         {
             if (!ok)
             {
-                throw new DatFormatException($"{source}: {path}: {message}");
+                throw new InputFormatException($"{source}: {path}: {message}");
             }
         }
 
@@ -271,12 +257,12 @@ public static class DatManifestJson
     {
         if (!parent.TryGetProperty(name, out var e))
         {
-            throw new DatFormatException($"{source}: {at}.{name}: missing");
+            throw new InputFormatException($"{source}: {at}.{name}: missing");
         }
 
         if (e.ValueKind != JsonValueKind.Array || e.GetArrayLength() > MaxItems)
         {
-            throw new DatFormatException($"{source}: {at}.{name}: expected an array of at most {MaxItems} items");
+            throw new InputFormatException($"{source}: {at}.{name}: expected an array of at most {MaxItems} items");
         }
 
         return [.. e.EnumerateArray()];
@@ -286,7 +272,7 @@ public static class DatManifestJson
     {
         if (!parent.TryGetProperty(name, out var e))
         {
-            throw new DatFormatException($"{source}: {at}.{name}: missing");
+            throw new InputFormatException($"{source}: {at}.{name}: missing");
         }
 
         return Text(e, $"{at}.{name}", source);
@@ -297,7 +283,7 @@ public static class DatManifestJson
     {
         if (!parent.TryGetProperty(name, out var e))
         {
-            throw new DatFormatException($"{source}: {RecordPath(index)}.{name}: missing");
+            throw new InputFormatException($"{source}: {RecordPath(index)}.{name}: missing");
         }
 
         // A readable string at once; anything else is read again by Text, with its path, for the message.
@@ -306,13 +292,13 @@ public static class DatManifestJson
 
     private static string RecordPath(int index) => string.Create(CultureInfo.InvariantCulture, $"$.records[{index}]");
 
-    private static DatFormatException Fail(string source, string path, string message) => new($"{source}: {path}: {message}");
+    private static InputFormatException Fail(string source, string path, string message) => new($"{source}: {path}: {message}");
 
     private static string Text(JsonElement e, string path, string source)
     {
         if (e.ValueKind != JsonValueKind.String)
         {
-            throw new DatFormatException($"{source}: {path}: expected a string");
+            throw new InputFormatException($"{source}: {path}: expected a string");
         }
 
         try
@@ -321,7 +307,7 @@ public static class DatManifestJson
         }
         catch (InvalidOperationException)
         {
-            throw new DatFormatException($"{source}: {path}: not valid text (invalid UTF-8 or a lone surrogate)");
+            throw new InputFormatException($"{source}: {path}: not valid text (invalid UTF-8 or a lone surrogate)");
         }
     }
 
@@ -365,7 +351,7 @@ public static class DatManifestJson
         string text = Text(e, path, source);
         if (!(text.StartsWith("0x", StringComparison.Ordinal) && text.Length == 6 && ushort.TryParse(text.AsSpan(2), NumberStyles.AllowHexSpecifier, CultureInfo.InvariantCulture, out ushort v)))
         {
-            throw new DatFormatException($"{source}: {path}: expected a block id \"0x\" and 4 hex digits, got \"{AcPhys.Formats.Values.InputQuote.Brief(text)}\"");
+            throw new InputFormatException($"{source}: {path}: expected a block id \"0x\" and 4 hex digits, got \"{AcPhys.Formats.Values.InputQuote.Brief(text)}\"");
         }
 
         return new LandblockId(v);
@@ -376,7 +362,7 @@ public static class DatManifestJson
         string text = Text(e, path, source);
         if (!CellIdText.TryParse(text, out var id))
         {
-            throw new DatFormatException($"{source}: {path}: expected a cell id \"0x\" and 8 hex digits, got \"{AcPhys.Formats.Values.InputQuote.Brief(text)}\"");
+            throw new InputFormatException($"{source}: {path}: expected a cell id \"0x\" and 8 hex digits, got \"{AcPhys.Formats.Values.InputQuote.Brief(text)}\"");
         }
 
         return id;

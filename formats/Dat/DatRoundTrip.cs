@@ -22,7 +22,7 @@ public static class DatRoundTrip
     /// <summary>Returns the records a scene travels as (protocol v1 <c>load_scene</c> with <c>dat</c>), written once per scene instance.</summary>
     /// <param name="scene">A valid scene.</param>
     /// <returns>The export (manifest title "wire", source "load_scene").</returns>
-    /// <exception cref="DatFormatException">The scene exceeds what the records hold.</exception>
+    /// <exception cref="InputFormatException">The scene exceeds what the records hold.</exception>
     public static DatExport Records(Scene scene)
     {
         lock (Recent)

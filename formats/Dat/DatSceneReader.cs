@@ -16,7 +16,7 @@ public static class DatSceneReader
     /// <param name="manifest">The manifest.</param>
     /// <param name="load">The bytes of a record.</param>
     /// <returns>The scene.</returns>
-    /// <exception cref="DatFormatException">Any defect.</exception>
+    /// <exception cref="InputFormatException">Any defect.</exception>
     public static Scene Read(DatManifest manifest, Func<ManifestRecord, byte[]> load)
     {
         var seen = new HashSet<(uint, bool)>();
@@ -96,9 +96,9 @@ public static class DatSceneReader
             // cell), on the scene as built: no JSON round trip (issue #26), the same first message.
             return AcPhys.Formats.Values.WireProfile.Time("dat read: SceneRules.Check", () => new SceneRules("records").Check(scene, "$"));
         }
-        catch (SceneFormatException e)
+        catch (InputFormatException e)
         {
-            throw new DatFormatException("the scene the records describe is not valid: " + e.Message, e);
+            throw new InputFormatException("the scene the records describe is not valid: " + e.Message, e);
         }
     }
 
@@ -108,9 +108,9 @@ public static class DatSceneReader
         var id = new CellId(r.Id);
         Require(id.IsEnv, $"{where}: id at byte 0: not an env cell id");
         var structs = environments.GetValueOrDefault(r.EnvironmentId)
-            ?? throw new DatFormatException($"{where}: environmentId: Environment 0x0D00{r.EnvironmentId:X4} is not in the folder");
+            ?? throw new InputFormatException($"{where}: environmentId: Environment 0x0D00{r.EnvironmentId:X4} is not in the folder");
         var cs = structs.GetValueOrDefault(r.CellStructure)
-            ?? throw new DatFormatException($"{where}: cellStructure: Environment 0x0D00{r.EnvironmentId:X4} has no CellStruct {r.CellStructure}");
+            ?? throw new InputFormatException($"{where}: cellStructure: Environment 0x0D00{r.EnvironmentId:X4} has no CellStruct {r.CellStructure}");
         long t = AcPhys.Formats.Values.WireProfile.Start();
         var pieces = CellStructPieces.Of(cs.CellBsp, $"Environment 0x0D00{r.EnvironmentId:X4} cellStructs[key {cs.Key}].cellBsp");
         AcPhys.Formats.Values.WireProfile.Stop("dat read: cell pieces from BSP", t);
@@ -136,7 +136,7 @@ public static class DatSceneReader
     {
         if (!ok)
         {
-            throw new DatFormatException(message.Text());
+            throw new InputFormatException(message.Text());
         }
     }
 
@@ -144,7 +144,7 @@ public static class DatSceneReader
     {
         if (!ok)
         {
-            throw new DatFormatException(message);
+            throw new InputFormatException(message);
         }
     }
 }

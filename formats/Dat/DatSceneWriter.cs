@@ -26,7 +26,7 @@ public static class DatSceneWriter
     /// <param name="title">Title for the manifest.</param>
     /// <param name="source">Source for the manifest.</param>
     /// <returns>The export.</returns>
-    /// <exception cref="DatFormatException">The scene exceeds what the records hold (more than 255 portals in a cell, ...).</exception>
+    /// <exception cref="InputFormatException">The scene exceeds what the records hold (more than 255 portals in a cell, ...).</exception>
     public static DatExport Write(Scene scene, string title, string source)
     {
         var records = new List<(ManifestRecord, byte[])>();
@@ -98,7 +98,7 @@ public static class DatSceneWriter
     {
         if (!ok)
         {
-            throw new DatFormatException("scene cannot be written as records: " + message);
+            throw new InputFormatException("scene cannot be written as records: " + message);
         }
     }
 
@@ -107,7 +107,7 @@ public static class DatSceneWriter
     {
         if (!ok)
         {
-            throw new DatFormatException("scene cannot be written as records: " + message.Text());
+            throw new InputFormatException("scene cannot be written as records: " + message.Text());
         }
     }
 }

@@ -81,7 +81,7 @@ public sealed record EnvCellRecord(uint Id, uint Flags, IReadOnlyList<ushort> Su
     /// <param name="data">The bytes.</param>
     /// <param name="expectedId">The id the record must carry.</param>
     /// <returns>The record.</returns>
-    /// <exception cref="DatFormatException">Any defect.</exception>
+    /// <exception cref="InputFormatException">Any defect.</exception>
     public static EnvCellRecord Read(byte[] data, uint expectedId) => ByteReader.Strictly(named => Read(data, expectedId, named));
 
     internal static EnvCellRecord Read(byte[] data, uint expectedId, bool named)

@@ -82,7 +82,7 @@ public static class EnvironmentCodec
     /// <param name="data">The bytes.</param>
     /// <param name="expectedId">The id the record must carry.</param>
     /// <returns>The CellStructs by key, in record order.</returns>
-    /// <exception cref="DatFormatException">Any defect.</exception>
+    /// <exception cref="InputFormatException">Any defect.</exception>
     public static IReadOnlyList<CellStructRecord> Read(byte[] data, uint expectedId) => ByteReader.Strictly(named => Read(data, expectedId, named));
 
     internal static List<CellStructRecord> Read(byte[] data, uint expectedId, bool named)

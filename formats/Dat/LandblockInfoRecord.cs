@@ -87,7 +87,7 @@ public sealed record LandblockInfoRecord(uint Id, uint NumCells, IReadOnlyList<D
     /// <param name="data">The bytes.</param>
     /// <param name="expectedId">The id the record must carry.</param>
     /// <returns>The record.</returns>
-    /// <exception cref="DatFormatException">Any defect.</exception>
+    /// <exception cref="InputFormatException">Any defect.</exception>
     public static LandblockInfoRecord Read(byte[] data, uint expectedId) => ByteReader.Strictly(named => Read(data, expectedId, named));
 
     internal static LandblockInfoRecord Read(byte[] data, uint expectedId, bool named)

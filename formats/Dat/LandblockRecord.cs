@@ -30,7 +30,7 @@ public static class LandblockRecord
     /// <param name="data">The bytes.</param>
     /// <param name="expectedId">The id.</param>
     /// <returns>hasObjects: whether a reader reads the block's LandblockInfo.</returns>
-    /// <exception cref="DatFormatException">Not a landblock of this id, hasObjects other than 0 or 1, not flat, or trailing bytes.</exception>
+    /// <exception cref="InputFormatException">Not a landblock of this id, hasObjects other than 0 or 1, not flat, or trailing bytes.</exception>
     public static bool ReadFlat(byte[] data, uint expectedId) => ByteReader.Strictly(named => ReadFlat(data, expectedId, named));
 
     internal static bool ReadFlat(byte[] data, uint expectedId, bool named)

@@ -171,7 +171,7 @@ public static class SceneJson
     /// <param name="json">The text.</param>
     /// <param name="source">A name for messages.</param>
     /// <returns>The scene.</returns>
-    /// <exception cref="SceneFormatException">Any defect, with its JSON path.</exception>
+    /// <exception cref="InputFormatException">Any defect, with its JSON path.</exception>
     public static Scene Read(string json, string source)
     {
         JsonDocument doc;
@@ -181,7 +181,7 @@ public static class SceneJson
         }
         catch (JsonException e)
         {
-            throw new SceneFormatException($"{source}: $: not JSON ({e.Message})");
+            throw new InputFormatException($"{source}: $: not JSON ({e.Message})");
         }
 
         using (doc)
@@ -190,12 +190,12 @@ public static class SceneJson
             // escape in one throws InvalidOperationException (found by the scene-json fuzz target).
             if (AcPhys.Formats.Corpus.JsonStrings.FirstUnreadable(doc.RootElement, "$") is { } bad)
             {
-                throw new SceneFormatException($"{source}: {bad}: not valid text (a lone UTF-16 surrogate escape)");
+                throw new InputFormatException($"{source}: {bad}: not valid text (a lone UTF-16 surrogate escape)");
             }
 
             if (AcPhys.Formats.Corpus.JsonKeys.FirstDuplicate(doc.RootElement) is { } duplicate)
             {
-                throw new SceneFormatException($"{source}: {AcPhys.Formats.Corpus.JsonKeys.Message(duplicate)}");
+                throw new InputFormatException($"{source}: {AcPhys.Formats.Corpus.JsonKeys.Message(duplicate)}");
             }
 
             return Read(doc.RootElement, source, "$");
@@ -207,14 +207,14 @@ public static class SceneJson
     /// <param name="source">A name for messages.</param>
     /// <param name="at">The element's JSON path.</param>
     /// <returns>The scene.</returns>
-    /// <exception cref="SceneFormatException">Any defect, with its JSON path.</exception>
+    /// <exception cref="InputFormatException">Any defect, with its JSON path.</exception>
     public static Scene Read(JsonElement e, string source, string at)
     {
         var r = new Reader(source);
         r.Require(e.ValueKind == JsonValueKind.Object, at, "expected an object");
         if (AcPhys.Formats.Corpus.JsonStrings.FirstUnreadable(e, at) is { } bad)
         {
-            throw new SceneFormatException($"{source}: {bad}: not valid text (a lone UTF-16 surrogate escape)");
+            throw new InputFormatException($"{source}: {bad}: not valid text (a lone UTF-16 surrogate escape)");
         }
 
         var blocks = r.BlockList(e, "blocks", at, required: true);

@@ -20,7 +20,7 @@ public sealed class SceneRules(string source)
     /// <param name="scene">The scene.</param>
     /// <param name="at">The scene's JSON path, for messages (<c>$</c>).</param>
     /// <returns>The scene.</returns>
-    /// <exception cref="SceneFormatException">The first broken rule, with the JSON path it would have in the scene's file.</exception>
+    /// <exception cref="InputFormatException">The first broken rule, with the JSON path it would have in the scene's file.</exception>
     public Scene Check(Scene scene, string at)
     {
         // The paths are spelt only for a message (issue 26: spelling every field's path was most of this check's time
@@ -55,12 +55,12 @@ public sealed class SceneRules(string source)
     /// <param name="ok">True when the rule holds.</param>
     /// <param name="path">The JSON path of the value.</param>
     /// <param name="message">What is wrong.</param>
-    /// <exception cref="SceneFormatException">When <paramref name="ok"/> is false.</exception>
+    /// <exception cref="InputFormatException">When <paramref name="ok"/> is false.</exception>
     public void Require(bool ok, string path, string message)
     {
         if (!ok)
         {
-            throw new SceneFormatException($"{source}: {path}: {message}");
+            throw new InputFormatException($"{source}: {path}: {message}");
         }
     }
 
@@ -68,7 +68,7 @@ public sealed class SceneRules(string source)
     /// <param name="ok">True when the rule holds.</param>
     /// <param name="path">The JSON path of the value.</param>
     /// <param name="message">What is wrong (an interpolated string, formatted only when <paramref name="ok"/> is false: issue 26).</param>
-    /// <exception cref="SceneFormatException">When <paramref name="ok"/> is false.</exception>
+    /// <exception cref="InputFormatException">When <paramref name="ok"/> is false.</exception>
     public void Require(bool ok, string path, [System.Runtime.CompilerServices.InterpolatedStringHandlerArgument("ok")] ref AcPhys.Formats.Dat.FailureText message) =>
         Require(ok, new At(path), ref message);
 
@@ -217,7 +217,7 @@ public sealed class SceneRules(string source)
     {
         if (!ok)
         {
-            throw new SceneFormatException($"{source}: {path}: {message.Text()}");
+            throw new InputFormatException($"{source}: {path}: {message.Text()}");
         }
     }
 
@@ -256,7 +256,7 @@ public sealed class SceneRules(string source)
         }
         catch (ArgumentException e)
         {
-            throw new SceneFormatException($"{source}: {path}.planes: {e.Message.Split(" (Parameter", 2)[0]}");
+            throw new InputFormatException($"{source}: {path}.planes: {e.Message.Split(" (Parameter", 2)[0]}");
         }
     }
 

@@ -7,23 +7,28 @@ namespace AcPhys.Formats.Values;
 /// <summary>
 /// An opt-in stopwatch breakdown of the served path (issue 26; docs/protocol.md, "Speed"): with
 /// <c>ACPHYS_WIRE_PROFILE=1</c> in the environment, the tool and <c>acphys serve</c> (which inherits it) each print on
-/// stderr at exit how long they spent in each stage and how often. Off, a stage costs one branch.
+/// stderr at exit how long they spent in each stage and how often. Off, a stage costs one branch. The tool switches it
+/// on at start (<see cref="WireProfileSwitch.Enable"/>, from spec's <c>ToolEnvironment</c>): formats reads no environment.
 /// </summary>
 /// <remarks>Stages may nest (a request line's build includes its scene's records); the table says which.</remarks>
 internal static class WireProfile
 {
     private static readonly ConcurrentDictionary<string, long[]> Totals = new(StringComparer.Ordinal);
 
-    static WireProfile()
+    private static int enabled;
+
+    /// <summary>Gets a value indicating whether the breakdown is collected.</summary>
+    public static bool On { get; private set; }
+
+    /// <summary>Switches the breakdown on for the rest of the process; it is printed at exit.</summary>
+    public static void Enable()
     {
-        if (On)
+        if (Interlocked.Exchange(ref enabled, 1) == 0)
         {
+            On = true;
             AppDomain.CurrentDomain.ProcessExit += (_, _) => Print();
         }
     }
-
-    /// <summary>Gets a value indicating whether the breakdown is collected.</summary>
-    public static bool On { get; } = Environment.GetEnvironmentVariable("ACPHYS_WIRE_PROFILE") == "1";
 
     /// <summary>Starts timing a stage.</summary>
     /// <returns>The start, or 0 when off.</returns>

@@ -14,7 +14,7 @@ public sealed class CorpusFileTarget : ParserTarget
     public override string Name => "corpus";
 
     /// <inheritdoc/>
-    public override string Description => "CorpusJson.Read (corpus and failure files, land and walk entries); only CorpusFormatException may escape";
+    public override string Description => "CorpusJson.Read (corpus and failure files, land and walk entries); only InputFormatException may escape";
 
     /// <inheritdoc/>
     protected override CorpusEntry? Read(ReadOnlySpan<byte> data) => CorpusJson.Read(Encoding.UTF8.GetString(data), "fuzz");

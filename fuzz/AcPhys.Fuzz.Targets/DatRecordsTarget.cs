@@ -1,3 +1,4 @@
+using AcPhys.Formats;
 using AcPhys.Formats.Dat;
 
 namespace AcPhys.Fuzz.Targets;
@@ -5,7 +6,7 @@ namespace AcPhys.Fuzz.Targets;
 /// <summary>
 /// The <c>dat-records</c> parser target: bytes → the record reader (docs/dat-scenes.md). The first byte picks the
 /// record type (EnvCell, Environment, LandblockInfo, Landblock); the rest is the record, whose id is taken from its
-/// own first 4 bytes. Only <see cref="DatFormatException"/> may escape; an accepted record must write back to the same bytes.
+/// own first 4 bytes. Only <see cref="InputFormatException"/> may escape; an accepted record must write back to the same bytes.
 /// </summary>
 public sealed class DatRecordsTarget : FuzzTarget
 {
@@ -13,7 +14,7 @@ public sealed class DatRecordsTarget : FuzzTarget
     public override string Name => "dat-records";
 
     /// <inheritdoc/>
-    public override string Description => "the dat record reader on one record (type byte + record bytes); only DatFormatException may escape";
+    public override string Description => "the dat record reader on one record (type byte + record bytes); only InputFormatException may escape";
 
     /// <inheritdoc/>
     public override TargetKind Kind => TargetKind.Parser;
@@ -34,7 +35,7 @@ public sealed class DatRecordsTarget : FuzzTarget
             {
                 Run(data);
             }
-            catch (DatFormatException)
+            catch (InputFormatException)
             {
                 // a clean rejection is the reader doing its job
             }

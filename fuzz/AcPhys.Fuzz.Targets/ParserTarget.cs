@@ -1,11 +1,12 @@
 using System.Text;
+using AcPhys.Formats;
 using AcPhys.Formats.Corpus;
 
 namespace AcPhys.Fuzz.Targets;
 
 /// <summary>
 /// A parser target: bytes → one of the project's readers. The reader may reject an input only with
-/// <see cref="CorpusFormatException"/>; any other exception escapes and is a bug. An input it accepts must also
+/// <see cref="InputFormatException"/>; any other exception escapes and is a bug. An input it accepts must also
 /// survive write → read → write unchanged (<see cref="RoundTripException"/> otherwise).
 /// </summary>
 public abstract class ParserTarget : FuzzTarget
@@ -42,7 +43,7 @@ public abstract class ParserTarget : FuzzTarget
             {
                 entry = Read(data);
             }
-            catch (CorpusFormatException)
+            catch (InputFormatException)
             {
                 return; // a clean rejection is the reader doing its job
             }
@@ -64,6 +65,6 @@ public abstract class ParserTarget : FuzzTarget
     /// <summary>Reads the input with the reader under test.</summary>
     /// <param name="data">The bytes.</param>
     /// <returns>The entry read, or null when the input was rejected before the reader (not the reader's concern).</returns>
-    /// <exception cref="CorpusFormatException">The reader's clean rejection.</exception>
+    /// <exception cref="InputFormatException">The reader's clean rejection.</exception>
     protected abstract CorpusEntry? Read(ReadOnlySpan<byte> data);
 }

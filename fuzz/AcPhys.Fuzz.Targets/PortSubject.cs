@@ -1,8 +1,8 @@
-using System.Globalization;
 using AcPhys.Contract;
 using AcPhys.Protocol.Client;
 using AcPhys.Protocol.Messages;
 using AcPhys.Spec.Adapters;
+using AcPhys.Spec.Running;
 
 namespace AcPhys.Fuzz.Targets;
 
@@ -15,13 +15,13 @@ namespace AcPhys.Fuzz.Targets;
 public static class PortSubject
 {
     /// <summary>The harness's variable naming an adapter assembly (an instrumented copy, under afl-fuzz).</summary>
-    public const string ImplVariable = "ACPHYS_IMPL";
+    public const string ImplVariable = ToolEnvironment.ImplVariable;
 
     /// <summary>The harness's variable holding a protocol v1 command line.</summary>
-    public const string CommandVariable = "ACPHYS_IMPL_CMD";
+    public const string CommandVariable = ToolEnvironment.ImplCommandVariable;
 
     /// <summary>The harness's variable holding the per-answer timeout of the child, in seconds.</summary>
-    public const string TimeoutVariable = "ACPHYS_IMPL_TIMEOUT";
+    public const string TimeoutVariable = ToolEnvironment.ImplTimeoutVariable;
 
     /// <summary>Returns an in-process port: a new adapter instance wherever the reference would get a fresh one.</summary>
     /// <param name="path">The adapter assembly.</param>
@@ -47,14 +47,16 @@ public static class PortSubject
             () => ProcessAdapter.Start(commandLine, new ProcessAdapterOptions { Timeout = timeout, MaxLineBytes = maxLineBytes, StderrSink = stderrSink }),
             freshEach: false);
 
-    /// <summary>Reads the harness's environment: a port, or null for the reference (and its planted faults).</summary>
+    /// <summary>Reads the harness's settings (its environment, read once): a port, or null for the reference (and its planted faults).</summary>
+    /// <param name="settings">The settings.</param>
     /// <returns>The subject, or null.</returns>
     /// <exception cref="ArgumentException">Both variables are set, or the timeout or line limit is malformed.</exception>
     /// <exception cref="AdapterLoadException">The assembly holds no usable adapter.</exception>
-    public static Subject? FromEnvironment()
+    public static Subject? FromEnvironment(ToolEnvironment settings)
     {
-        string? dll = Environment.GetEnvironmentVariable(ImplVariable) is { Length: > 0 } d ? d : null;
-        string? cmd = Environment.GetEnvironmentVariable(CommandVariable) is { Length: > 0 } c ? c : null;
+        ArgumentNullException.ThrowIfNull(settings);
+        string? dll = settings.Impl;
+        string? cmd = settings.ImplCommand;
         if (dll is not null && cmd is not null)
         {
             throw new ArgumentException($"{ImplVariable} and {CommandVariable} exclude each other");
@@ -70,16 +72,12 @@ public static class PortSubject
             return null;
         }
 
-        var timeout = ProcessAdapterOptions.DefaultTimeout;
-        if (Environment.GetEnvironmentVariable(TimeoutVariable) is { Length: > 0 } text)
+        if ((settings.Problem(TimeoutVariable) ?? settings.Problem(ToolEnvironment.MaxLineVariable)) is { } problem)
         {
-            timeout = double.TryParse(text, NumberStyles.Float, CultureInfo.InvariantCulture, out double s) && s is >= 0.1 and <= 3600
-                ? TimeSpan.FromSeconds(s)
-                : throw new ArgumentException($"{TimeoutVariable}: expected seconds from 0.1 to 3600, got '{AcPhys.Formats.Values.InputQuote.Line(text, 40)}'");
+            throw new ArgumentException(problem);
         }
 
-        int bytes = LineLimit.FromEnvironment(out string? problem);
-        return problem is null ? Served(cmd, timeout, bytes, null) : throw new ArgumentException(problem);
+        return Served(cmd, settings.ImplTimeout ?? ProcessAdapterOptions.DefaultTimeout, LineLimit.OrDefault(settings.MaxLineBytes), null);
     }
 
     /// <summary>Says why a target cannot fuzz a port (a parser target, or none of its invariants testable for it), or null.</summary>

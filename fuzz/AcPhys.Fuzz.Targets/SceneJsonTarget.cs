@@ -1,5 +1,6 @@
 using System.Text;
 using AcPhys.Contract;
+using AcPhys.Formats;
 using AcPhys.Formats.Scenes;
 using AcPhys.Spec.Scenes;
 
@@ -8,7 +9,7 @@ namespace AcPhys.Fuzz.Targets;
 /// <summary>
 /// The <c>scene-json</c> parser target: bytes → <see cref="SceneJson.Read(string, string)"/>, the reader of scene files
 /// (<c>acphys scene</c>, scene walks in corpus files, scenes sent over the wire). The reader may reject an input only
-/// with <see cref="SceneFormatException"/>; any other exception is a bug. A scene it accepts must survive
+/// with <see cref="InputFormatException"/>; any other exception is a bug. A scene it accepts must survive
 /// write → read → write unchanged (<see cref="RoundTripException"/> otherwise).
 /// </summary>
 public sealed class SceneJsonTarget : FuzzTarget
@@ -25,7 +26,7 @@ public sealed class SceneJsonTarget : FuzzTarget
     public override string Name => "scene-json";
 
     /// <inheritdoc/>
-    public override string Description => "SceneJson.Read (scene files, scenes in corpus files and requests); only SceneFormatException may escape";
+    public override string Description => "SceneJson.Read (scene files, scenes in corpus files and requests); only InputFormatException may escape";
 
     /// <inheritdoc/>
     public override TargetKind Kind => TargetKind.Parser;
@@ -52,7 +53,7 @@ public sealed class SceneJsonTarget : FuzzTarget
             {
                 scene = SceneJson.Read(Encoding.UTF8.GetString(data), "fuzz");
             }
-            catch (SceneFormatException)
+            catch (InputFormatException)
             {
                 return; // a clean rejection is the reader doing its job
             }

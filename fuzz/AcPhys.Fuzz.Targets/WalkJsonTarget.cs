@@ -13,7 +13,7 @@ public sealed class WalkJsonTarget : ParserTarget
     public override string Name => "walk-json";
 
     /// <inheritdoc/>
-    public override string Description => "WalkJson.Read on any JSON value; only CorpusFormatException may escape";
+    public override string Description => "WalkJson.Read on any JSON value; only InputFormatException may escape";
 
     /// <inheritdoc/>
     public override IReadOnlyDictionary<string, byte[]> Seeds { get; } = ParserSeeds.Entries

@@ -5,7 +5,7 @@ namespace AcPhys.Fuzz.Tests;
 
 public sealed class DatRecordsTargetTests
 {
-    [Fact(DisplayName = "dat-records: every prefix, every single-byte change and every count blown up of every seed is read or refused with DatFormatException only.")]
+    [Fact(DisplayName = "dat-records: every prefix, every single-byte change and every count blown up of every seed is read or refused with InputFormatException only.")]
     public void Mutated_seeds_never_crash_the_reader()
     {
         var test = FuzzTargets.Find("dat-records")!.CreateTest(fault: null);

@@ -1,4 +1,5 @@
 using AcPhys.Contract;
+using AcPhys.Formats;
 using AcPhys.Formats.Corpus;
 using AcPhys.Fuzz.Targets;
 using AcPhys.Spec.Cases;
@@ -137,7 +138,7 @@ public sealed class PartsTargetTests
             return;
         }
 
-        var e = Assert.Throws<CorpusFormatException>(() => CorpusJson.Read(json, "p.json"));
+        var e = Assert.Throws<InputFormatException>(() => CorpusJson.Read(json, "p.json"));
         Assert.Contains(error, e.Message, StringComparison.Ordinal);
     }
 }

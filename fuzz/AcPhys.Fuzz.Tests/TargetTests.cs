@@ -108,7 +108,7 @@ public sealed class TargetTests
 
         foreach (string s in inputs)
         {
-            test(Encoding.UTF8.GetBytes(s)); // returns: only CorpusFormatException (swallowed) was thrown
+            test(Encoding.UTF8.GetBytes(s)); // returns: only InputFormatException (swallowed) was thrown
         }
     }
 

@@ -17,11 +17,17 @@ const string Usage = "usage: AcPhys.Fuzz TARGET [INPUT] | replay TARGET FILE... 
 // SharpFuzz's probes need a map before any instrumented code runs; Fuzzer.Run swaps in afl-fuzz's shared memory.
 PrivateMap.Attach();
 ForkServerPipes.KeepFromChildren(); // before an --impl-cmd child can be started
-string? fault = Environment.GetEnvironmentVariable("ACPHYS_FAULT") is { Length: > 0 } f ? f : null;
+var settings = AcPhys.Spec.Running.ToolEnvironment.Process; // the ACPHYS_* environment, read once
+if (settings.WireProfile)
+{
+    AcPhys.Formats.Values.WireProfileSwitch.Enable();
+}
+
+string? fault = settings.Fault;
 Subject subject;
 try
 {
-    subject = PortSubject.FromEnvironment() ?? Subject.Of(fault);
+    subject = PortSubject.FromEnvironment(settings) ?? Subject.Of(fault);
 }
 catch (Exception e) when (e is ArgumentException or AcPhys.Spec.Adapters.AdapterLoadException)
 {
@@ -30,7 +36,7 @@ catch (Exception e) when (e is ArgumentException or AcPhys.Spec.Adapters.Adapter
 }
 
 var rest = new Queue<string>(args);
-string? command = rest.Count > 0 ? rest.Dequeue() : Environment.GetEnvironmentVariable("ACPHYS_FUZZ_TARGET");
+string? command = rest.Count > 0 ? rest.Dequeue() : settings.FuzzTarget;
 
 switch (command)
 {

@@ -1,3 +1,4 @@
+using AcPhys.Formats;
 using AcPhys.Formats.Cases;
 using AcPhys.Formats.Corpus;
 using AcPhys.Props.Support;
@@ -58,19 +59,19 @@ public sealed class MalformedCorpusFiles
     [MemberData(nameof(Cases))]
     public void Refused(string json, string expected)
     {
-        var e = Assert.Throws<CorpusFormatException>(() => CorpusJson.Read(json, "bad.json"));
+        var e = Assert.Throws<InputFormatException>(() => CorpusJson.Read(json, "bad.json"));
         Assert.StartsWith("bad.json: ", e.Message, StringComparison.Ordinal);
         Assert.Contains(expected, e.Message, StringComparison.Ordinal);
     }
 
-    [Fact(DisplayName = "A missing file is a CorpusFormatException naming the file")]
+    [Fact(DisplayName = "A missing file is a InputFormatException naming the file")]
     public void MissingFile()
     {
-        var e = Assert.Throws<CorpusFormatException>(() => CorpusJson.ReadFile("/nonexistent/acphys.json"));
+        var e = Assert.Throws<InputFormatException>(() => CorpusJson.ReadFile("/nonexistent/acphys.json"));
         Assert.Contains("/nonexistent/acphys.json", e.Message, StringComparison.Ordinal);
     }
 
-    [CiProperty(MaxTest = 2000, DisplayName = "Any text either parses or raises CorpusFormatException, nothing else (mangled good files)")]
+    [CiProperty(MaxTest = 2000, DisplayName = "Any text either parses or raises InputFormatException, nothing else (mangled good files)")]
     public Property MangledTextNeverThrowsAnythingElse() =>
         Prop.ForAll(Gen.Zip(Gen.Choose(0, Good.Length - 1), Gen.Choose(0, 127)).ToArbitrary(), t =>
             {
@@ -80,7 +81,7 @@ public sealed class MalformedCorpusFiles
                 {
                     _ = CorpusJson.Read(new string(chars), "mangled.json");
                 }
-                catch (CorpusFormatException)
+                catch (InputFormatException)
                 {
                 }
             });

@@ -1,6 +1,7 @@
 using System.Text;
 using System.Text.Json;
 using AcPhys.Contract;
+using AcPhys.Formats;
 using AcPhys.Formats.Corpus;
 using AcPhys.Formats.Scenes;
 using AcPhys.Props.Support;
@@ -13,7 +14,7 @@ namespace AcPhys.Props.Corpus;
 /// <summary>
 /// Inputs on which a parser fuzz target (docs/fuzzing.md) once threw something other than the format exception:
 /// corpus/regressions/parsers/TARGET-EXCEPTION-HASH.bin. Each must now be read or rejected with the reader's format
-/// exception (CorpusFormatException; SceneFormatException for scene-json), and a serve-request input answered line by line.
+/// exception (InputFormatException; InputFormatException for scene-json), and a serve-request input answered line by line.
 /// </summary>
 public sealed class ParserRegressions(ITestOutputHelper output)
 {
@@ -32,7 +33,7 @@ public sealed class ParserRegressions(ITestOutputHelper output)
         }
     }
 
-    [Theory(DisplayName = "Parser regression: the reader accepts the input or rejects it with CorpusFormatException, nothing else")]
+    [Theory(DisplayName = "Parser regression: the reader accepts the input or rejects it with InputFormatException, nothing else")]
     [MemberData(nameof(Files))]
     public void ReadsOrRejectsCleanly(string name)
     {
@@ -60,7 +61,7 @@ public sealed class ParserRegressions(ITestOutputHelper output)
                 {
                     SceneJson.Read(Encoding.UTF8.GetString(data), name);
                 }
-                catch (SceneFormatException e)
+                catch (InputFormatException e)
                 {
                     output.WriteLine("rejected: " + e.Message);
                 }
@@ -73,7 +74,7 @@ public sealed class ParserRegressions(ITestOutputHelper output)
 
             output.WriteLine("accepted");
         }
-        catch (CorpusFormatException e)
+        catch (InputFormatException e)
         {
             output.WriteLine("rejected: " + e.Message);
         }
@@ -84,7 +85,7 @@ public sealed class ParserRegressions(ITestOutputHelper output)
     {
         string json = "{\"format\":\"acphys-case\",\"version\":1,\"kind\":\"land\",\"title\":\"\\ud800\",\"foundBy\":\"hand\",\"case\":{}}";
 
-        var e = Assert.Throws<CorpusFormatException>(() => CorpusJson.Read(json, "t.json"));
+        var e = Assert.Throws<InputFormatException>(() => CorpusJson.Read(json, "t.json"));
         Assert.Contains("$.title", e.Message, StringComparison.Ordinal);
     }
 }

@@ -1,8 +1,6 @@
 using System.Reflection;
 using System.Text;
 using AcPhys.Contract;
-using AcPhys.Core;
-using AcPhys.Props.Support;
 using AcPhys.Spec.Faults;
 using AcPhys.Spec.Invariants;
 using AcPhys.Spec.Running;
@@ -127,23 +125,10 @@ public sealed class FactsCoverageTests(ITestOutputHelper output)
         string name = breaker["deviation:".Length..];
         if (name == "current-first")
         {
-            return new AnnouncedRetail(ReferenceAdapter.CurrentFirst);
+            return PortShimFaults.AnnouncingRetail(ReferenceAdapter.CurrentFirst);
         }
 
         Assert.True(FidelityNames.TryParse([name], out var indoor, out var outdoor, out _), $"unknown deviation {name}");
-        return new AnnouncedRetail(new ReferenceAdapter(outdoor: outdoor) { Indoor = indoor });
-    }
-
-    // Another mode's answers under a retail declaration (what `acphys serve --announce-retail` serves).
-    private sealed class AnnouncedRetail(ICellPhysics inner) : Forwarding(inner), ICellPhysics
-    {
-        public override PickPolicy Pick => PickPolicy.Retail;
-
-        // A whole walk answered as the inner mode answers it (ace-keeps-stale-cells: one array for the walk, issue 41).
-        public IReadOnlyList<FindCellResult> FindCellWalk(WalkRequest walk) => Inner.FindCellWalk(walk);
-
-        public override IndoorFidelity Indoor => IndoorFidelity.Retail;
-
-        public override OutdoorFidelity Outdoor => OutdoorFidelity.Retail;
+        return PortShimFaults.AnnouncingRetail(new ReferenceAdapter(outdoor: outdoor) { Indoor = indoor });
     }
 }

@@ -1,5 +1,6 @@
 using System.Text.Json;
 using System.Text.Json.Nodes;
+using AcPhys.Formats;
 using AcPhys.Formats.Dat;
 using Xunit.Abstractions;
 
@@ -82,7 +83,7 @@ public sealed class DatManifestInPlace(ITestOutputHelper output)
             var m = read();
             return $"accepted {DatManifestJson.Write(m)}";
         }
-        catch (DatFormatException e)
+        catch (InputFormatException e)
         {
             return "refused " + e.Message;
         }

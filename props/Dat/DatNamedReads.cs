@@ -1,4 +1,5 @@
 using System.Text;
+using AcPhys.Formats;
 using AcPhys.Formats.Dat;
 using Xunit.Abstractions;
 
@@ -65,7 +66,7 @@ public sealed class DatNamedReads(ITestOutputHelper output)
         {
             return "accepted " + read();
         }
-        catch (DatFormatException e)
+        catch (InputFormatException e)
         {
             return "refused: " + e.Message;
         }

@@ -1,6 +1,7 @@
 using System.Numerics;
 using AcPhys.Contract;
 using AcPhys.Core;
+using AcPhys.Formats;
 using AcPhys.Formats.Scenes;
 using Xunit.Abstractions;
 
@@ -88,7 +89,7 @@ public sealed class DatReadOnce(ITestOutputHelper output)
         {
             return "accepted " + SceneJson.Write(read());
         }
-        catch (SceneFormatException e)
+        catch (InputFormatException e)
         {
             return "refused " + e.Message;
         }

@@ -1,4 +1,5 @@
 using System.Text.Json.Nodes;
+using AcPhys.Formats;
 using AcPhys.Formats.Scenes;
 using AcPhys.Spec.Scenes;
 
@@ -43,7 +44,7 @@ public sealed class BadScenes
     public void BadSceneIsRefused(string label, string edit, string expected)
     {
         string json = Edit(Valid, edit);
-        var e = Assert.Throws<SceneFormatException>(() => SceneJson.Read(json, "bad.json"));
+        var e = Assert.Throws<InputFormatException>(() => SceneJson.Read(json, "bad.json"));
         Assert.StartsWith("bad.json: ", e.Message);
         Assert.True(e.Message.Contains(expected, StringComparison.Ordinal), $"{label}: got \"{e.Message}\"");
     }
@@ -53,7 +54,7 @@ public sealed class BadScenes
     {
         int open = Valid.IndexOf('{', StringComparison.Ordinal);
         string json = Valid[..(open + 1)] + "\"blocks\":[]," + Valid[(open + 1)..]; // a second "blocks", before the real one
-        var e = Assert.Throws<SceneFormatException>(() => SceneJson.Read(json, "bad.json"));
+        var e = Assert.Throws<InputFormatException>(() => SceneJson.Read(json, "bad.json"));
         Assert.Contains("bad.json: $.blocks: duplicate key", e.Message, StringComparison.Ordinal);
     }
 

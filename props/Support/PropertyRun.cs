@@ -30,7 +30,7 @@ namespace AcPhys.Props.Support;
 internal static class PropertyRun
 {
     /// <summary>Gets the profile chosen by <c>ACPHYS_PROFILE</c> (default pr).</summary>
-    public static Profile Profile { get; } = Profile.Find(Environment.GetEnvironmentVariable("ACPHYS_PROFILE") ?? "pr") ?? Profile.Pr;
+    public static Profile Profile { get; } = ToolEnvironment.Process.Profile ?? Profile.Pr;
 
     private static readonly ulong RunBase = Profile.BaseSeed ?? Seed.Fresh().Value;
 
@@ -62,13 +62,9 @@ internal static class PropertyRun
     /// <returns>The seed.</returns>
     public static Seed SeedFor(string invariantId)
     {
-        string? env = Environment.GetEnvironmentVariable("ACPHYS_SEED");
-        if (env is not null)
-        {
-            return Seed.TryParse(env, out var s) ? s : throw new XunitException($"ACPHYS_SEED='{env}' is not seed,gamma[,size]");
-        }
-
-        return Seed.Derive(RunBase, invariantId);
+        var settings = ToolEnvironment.Process;
+        return settings.Problem(ToolEnvironment.SeedVariable) is { } problem ? throw new XunitException(problem)
+            : settings.Seed ?? Seed.Derive(RunBase, invariantId);
     }
 
     /// <summary>Formats a failure: invariant, shrunk and original case, seed, and the replay commands.</summary>

@@ -1,7 +1,7 @@
 using System.Text.Json;
 using AcPhys.Contract;
+using AcPhys.Formats;
 using AcPhys.Formats.Dat;
-using AcPhys.Formats.Scenes;
 using AcPhys.Formats.Values;
 
 namespace AcPhys.Protocol.Messages;
@@ -79,15 +79,12 @@ public static class DatWire
 
             return DatSceneReader.Read(manifest, r => bytes.TryGetValue(r.File, out var b)
                 ? b
-                : throw new DatFormatException($"dat.records: {r.File} ({r.Type} {RecordIds.Text(r.Id)}) is listed in the manifest but not sent"));
+                : throw new InputFormatException($"dat.records: {r.File} ({r.Type} {RecordIds.Text(r.Id)}) is listed in the manifest but not sent"));
         }
-        catch (DatFormatException e)
+        catch (InputFormatException e)
         {
+            // A scene the records hold that breaks the scene rules arrives worded by DatSceneReader ("the scene the records describe is not valid: ...").
             throw new WireException("invalid dat records: " + e.Message, e);
-        }
-        catch (SceneFormatException e)
-        {
-            throw new WireException("invalid dat records: the scene they hold is not valid: " + e.Message, e);
         }
     }
 }

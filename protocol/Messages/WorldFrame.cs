@@ -27,20 +27,19 @@ public static class WorldFrame
     /// <param name="request">The request, as <see cref="Wire.Line"/> wrote it.</param>
     /// <returns>The request with world coordinates and <c>block_origin</c>.</returns>
     /// <exception cref="UnposableQueryException">A coordinate cannot be carried exactly in double.</exception>
-    public static string ToWorld(string request) => Rewrite(request, WorldFrameFault.None, toWorld: true) ?? request;
+    public static string ToWorld(string request) => Rewrite(request, toWorld: true) ?? request;
 
-    /// <summary>Rewrites a world-frame request line back into block frames, as a world-frame port's own code would (the shim behind <c>acphys serve --world-frame</c>).</summary>
+    /// <summary>Rewrites a world-frame request line back into block frames, as a world-frame port's own code would (the shim behind <c>acphys serve --world-frame</c>; its planted bug is spec's fault <c>world-frame-swapped-axes</c>).</summary>
     /// <param name="request">The request line.</param>
-    /// <param name="fault">A planted shim bug, or none.</param>
     /// <returns>The request in block frames (unchanged when it is not a JSON object: the server's parser reports that).</returns>
-    public static string ToBlock(string request, WorldFrameFault fault) => Rewrite(request, fault, toWorld: false) ?? request;
+    public static string ToBlock(string request) => Rewrite(request, toWorld: false) ?? request;
 
     /// <summary>Returns the world origin of a cell's landblock: (192 · block x, 192 · block y), exact in double.</summary>
     /// <param name="cell">Any id.</param>
     /// <returns>The origin, metres.</returns>
     public static (double X, double Y) BlockOrigin(CellId cell) => (192.0 * cell.BlockX, 192.0 * cell.BlockY);
 
-    private static string? Rewrite(string line, WorldFrameFault fault, bool toWorld)
+    private static string? Rewrite(string line, bool toWorld)
     {
         JsonObject? request;
         try
@@ -65,11 +64,6 @@ public static class WorldFrame
             }
 
             var (ox, oy) = BlockOrigin(cell);
-            if (fault == WorldFrameFault.SwappedBlockAxes)
-            {
-                (ox, oy) = (oy, ox);
-            }
-
             Coordinate(point, "x", ox, toWorld);
             Coordinate(point, "y", oy, toWorld);
             if (named && toWorld)

@@ -1,5 +1,6 @@
 using System.Text.Json;
 using AcPhys.Contract;
+using AcPhys.Formats;
 using AcPhys.Formats.Scenes;
 using AcPhys.Formats.Values;
 using AcPhys.Protocol.Child;
@@ -39,9 +40,6 @@ public sealed class ProtocolServer(ICellPhysics impl)
 
     /// <summary>Gets or initializes a value indicating whether the server declares <c>"frame": "world"</c> and converts each request's world coordinates back to block frames, as a world-frame port's shim would (<see cref="WorldFrame"/>).</summary>
     public bool InWorldFrame { get; init; }
-
-    /// <summary>Gets or initializes a planted bug of that conversion (the suite must fail it).</summary>
-    public WorldFrameFault FrameFault { get; init; }
 
     /// <summary>Gets or initializes a value indicating whether the server announces <c>pipeline</c> (true by default; false serves as an older server would: it chooses every scene id itself).</summary>
     public bool Pipeline { get; init; } = true;
@@ -119,7 +117,7 @@ public sealed class ProtocolServer(ICellPhysics impl)
     /// record) is answered as an error. Any exception that escapes is a bug of the server: <see cref="Answer(string)"/> turns it
     /// into an "internal error" answer, and the <c>serve-request</c> fuzz target reports it as a crash.
     /// </para></remarks>
-    public string AnswerChecked(string line) => Dispatched(() => Wire.Parse(InWorldFrame ? WorldFrame.ToBlock(line, FrameFault) : line));
+    public string AnswerChecked(string line) => Dispatched(() => Wire.Parse(InWorldFrame ? WorldFrame.ToBlock(line) : line));
 
     // A bug of this server, not of the request: AnswerChecked lets it escape so the serve-request fuzz target sees it.
     private static string Guarded(Func<string> answer)
@@ -336,7 +334,7 @@ public sealed class ProtocolServer(ICellPhysics impl)
             last = new LastScene(text, scene);
             return scene;
         }
-        catch (SceneFormatException e)
+        catch (InputFormatException e)
         {
             throw new WireException("invalid scene: " + e.Message, e);
         }

@@ -348,7 +348,7 @@ public static class SceneExtraction
                     };
                 });
             }
-            catch (DatFormatException e)
+            catch (InputFormatException e)
             {
                 var container = last?.PortalDat == true ? world.Portal : world.Cell;
                 throw Refused(container, last?.Id, e.Message, e);
@@ -361,7 +361,7 @@ public static class SceneExtraction
             {
                 return read();
             }
-            catch (DatFormatException e)
+            catch (InputFormatException e)
             {
                 throw Refused(container, id, e.Message, e);
             }

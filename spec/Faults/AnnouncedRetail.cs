@@ -2,10 +2,10 @@ using System.Numerics;
 using AcPhys.Contract;
 using AcPhys.Core;
 
-namespace AcPhys.Cli.Impl;
+namespace AcPhys.Spec.Faults;
 
 /// <summary>
-/// An implementation that behaves in one mode and announces retail (<c>acphys serve --announce-retail</c>): a port that
+/// An implementation that behaves in one mode and announces retail (<c>acphys serve --announce-retail</c>, the planted fault <c>ace-announced-retail</c>): a port that
 /// deviates without declaring it. Every answer is the inner one; only the declared pick and fidelity say retail, so the
 /// suite compares it with retail and must find each deviation (docs/facts-coverage.md, "Declared deviations").
 /// </summary>
