@@ -142,6 +142,10 @@ internal static class FuzzCommand
             {
                 settings = settings with { BuildDir = Path.Combine(root, ".fuzz", "build-impl") }; // the suite's assemblies uninstrumented
             }
+            else if (port.Command is not null)
+            {
+                settings = settings with { BuildDir = Path.Combine(root, ".fuzz", "build-cmd") }; // the wire code uninstrumented (HarnessBuild.For)
+            }
 
             // Checked before afl++ is installed or anything is built (issue 28).
             if (settings.NoBuild && !File.Exists(settings.Harness))

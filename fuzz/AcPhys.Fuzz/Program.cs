@@ -8,11 +8,14 @@ using SharpFuzz;
 // AcPhys.Fuzz dict TARGET FILE          write the target's afl-fuzz dictionary (-x) into FILE (nothing when it has none)
 // AcPhys.Fuzz cmin TARGET SEEDS DIR...  add to SEEDS the inputs of DIR... that cover new tuples (afl-cmin's job)
 // AcPhys.Fuzz bench TARGET [N]          time the test alone on N random 17-byte inputs (no afl-fuzz, no pipes)
+// AcPhys.Fuzz warmup TARGET [MS]        run the --impl-cmd warm-up for MS ms, printing the mean time of every 100 inputs
 // AcPhys.Fuzz list                      list targets
 // TARGET may also come from ACPHYS_FUZZ_TARGET; the planted fault from ACPHYS_FAULT (unset or empty: correct core);
 // a port instead of the reference from ACPHYS_IMPL (an adapter assembly, in process) or ACPHYS_IMPL_CMD (a protocol v1
 // command line: one child for this process's life, restarted after it failed; ACPHYS_IMPL_TIMEOUT seconds per answer).
-const string Usage = "usage: AcPhys.Fuzz TARGET [INPUT] | replay TARGET FILE... | seeds TARGET DIR | dict TARGET FILE | cmin TARGET SEEDS DIR... | bench TARGET [N] | list";
+// Under afl-fuzz an ACPHYS_IMPL_CMD child is warmed for ACPHYS_FUZZ_WARMUP_MS (default 3000; 0: not) before the
+// fork server starts (Warmup.cs).
+const string Usage = "usage: AcPhys.Fuzz TARGET [INPUT] | replay TARGET FILE... | seeds TARGET DIR | dict TARGET FILE | cmin TARGET SEEDS DIR... | bench TARGET [N] | warmup TARGET [MS] | list";
 
 // SharpFuzz's probes need a map before any instrumented code runs; Fuzzer.Run swaps in afl-fuzz's shared memory.
 PrivateMap.Attach();
@@ -111,6 +114,20 @@ switch (command)
             return 0;
         }
 
+    case "warmup":
+        {
+            if (rest.Count is < 1 or > 2 || FuzzTargets.Find(rest.Dequeue()) is not { } target || Create(target, subject) is not { } test)
+            {
+                Console.Error.WriteLine(Usage);
+                return 2;
+            }
+
+            int ms = rest.Count > 0 ? int.Parse(rest.Dequeue(), System.Globalization.CultureInfo.InvariantCulture) : Warmup.DefaultBudgetMs;
+            int ran = Warmup.Run(test, target, TimeSpan.FromMilliseconds(ms), (n, mean) => Console.WriteLine($"{n,7} {mean.TotalMicroseconds,10:F1} us/input"));
+            Console.WriteLine($"{target.Name}: {ran} warm-up inputs in {ms} ms");
+            return 0;
+        }
+
     case "replay":
         {
             if (rest.Count < 2 || FuzzTargets.Find(rest.Dequeue()) is not { } target)
@@ -158,6 +175,20 @@ switch (command)
             // it runs stdin once. An exception escaping the test is reported to afl-fuzz as a crash. Targets whose
             // inputs can outlast the timeout run out of process: afl-fuzz kills the timed-out child, not the server.
             Action<Stream> serve = Replay.FromStream(test);
+            if (subject.IsExternal && !target.MayHang && Environment.GetEnvironmentVariable(PortSubject.CommandVariable) is { Length: > 0 }
+                && Environment.GetEnvironmentVariable("__AFL_SHM_ID") is { Length: > 0 })
+            {
+                // The child is started; warm it (and this process's wire code) before afl-fuzz's first timed input. Not
+                // for a target run out of process: its child belongs to SharpFuzz's worker, restarted mid-campaign.
+                if (Warmup.BudgetFromEnvironment() is not { } budget)
+                {
+                    Console.Error.WriteLine($"{Warmup.BudgetVariable}: expected milliseconds from 0 to 60000");
+                    return 2;
+                }
+
+                Warmup.Run(test, target, budget);
+            }
+
             if (target.MayHang)
             {
                 Fuzzer.OutOfProcess.Run(serve);

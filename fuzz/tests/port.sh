@@ -9,7 +9,8 @@
 #   fuzz/tests/port.sh clean   [MINUTES]        clean ports, no finding expected: examples/dotnet-port in process (land,
 #                                               walk: its ops) and acphys serve (land, walk, scene, parts), default 10 min
 #
-# Needs the builds (./acphys fuzz once, and once with --impl) and examples/dotnet-adapter built (Release).
+# Needs the builds (./acphys fuzz once, once with --impl and once with --impl-cmd: .fuzz/build, build-impl, build-cmd)
+# and examples/dotnet-adapter built (Release).
 # MINUTES caps each --until-crash run (default 2); TIMEOUT_MS sets afl-fuzz -t for both sides of `served` (the scene
 # target's seeds time out at the in-process default of 1000 ms under a load of 15-20; --impl-cmd defaults to 5000). Results: .fuzz/port/. State the load next to every figure (uptime).
 set -euo pipefail

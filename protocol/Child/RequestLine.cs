@@ -37,6 +37,9 @@ internal sealed class RequestLine
     /// <summary>Gets the line's text (decoded once, when first asked); after <see cref="Written"/>, of a long line only its first <see cref="KeptBytes"/> bytes.</summary>
     public string Text => text ??= cut ? Encoding.UTF8.GetString(utf8!) + "…" : Encoding.UTF8.GetString(utf8!);
 
+    /// <summary>Gets a value indicating whether only the first <see cref="KeptBytes"/> were kept (<see cref="Text"/> is not the whole line).</summary>
+    public bool IsCut => cut;
+
     /// <summary>Called once the bytes are queued for the child: a long line keeps only what a quote of it can show.</summary>
     public void Written()
     {

@@ -35,7 +35,7 @@ public sealed partial class ProcessAdapter
             ids = [.. loaded.Select(e => e.Id)];
         }
 
-        using var s = new PipelineSession(child, timeout, ids);
+        using var s = new PipelineSession(child, timeout, ids, reader);
         session = s;
         try
         {

@@ -23,6 +23,7 @@ public sealed partial class ProcessAdapter : ICellPhysics, ITransport, IDisposab
     private readonly Lazy<ICellPhysics> guesser;
     private readonly ReportedFields[] reported = [new(), new()]; // [0] open land, [1] scenes
     private PipelineSession? session;
+    private readonly ReaderThread reader = new("acphys pipeline reader");
     private int chosenIds;
     private bool probing;
     private readonly List<string> differences = [];
@@ -204,5 +205,9 @@ public sealed partial class ProcessAdapter : ICellPhysics, ITransport, IDisposab
     }
 
     /// <inheritdoc/>
-    public void Dispose() => child.Dispose();
+    public void Dispose()
+    {
+        child.Dispose();
+        reader.Dispose();
+    }
 }

@@ -156,6 +156,11 @@ internal sealed partial class PipelineSession : IDisposable
                 lastAnswer = Stopwatch.GetTimestamp();
                 if (Diverged && sent.Done is null)
                 {
+                    if (!sent.IsTransport && !sent.Request.IsCut && divergedPass == passes && sent.Query > divergedAt)
+                    {
+                        after[sent.Query] = (sent.Request.Text, line.Text); // the next pass may take it (Reuse)
+                    }
+
                     continue;
                 }
 

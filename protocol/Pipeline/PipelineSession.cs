@@ -36,7 +36,7 @@ internal sealed partial class PipelineSession : IDisposable
     private readonly List<string> names = [];
     private readonly Dictionary<int, (string Request, string Line)> awaited = [];
     private BlockingCollection<Sent> inFlight = [];
-    private Thread reader;
+    private readonly ReaderThread reader;
     private readonly HashSet<string> maybeLoaded;
     private readonly Lock sync = new();
     private readonly object handoff = new();
@@ -56,17 +56,26 @@ internal sealed partial class PipelineSession : IDisposable
     private int passes = 1;
     private int divergedPass;
 
+    // Answers the child gave after the first difference of a pass (read to keep the stream aligned), by query slot:
+    // the next pass takes one as the child's answer while its requests are those of the previous pass, slot for slot
+    // (the child then saw the very requests the live run sends), instead of asking again (issue 40: a fuzz input near a
+    // planted fault differed on several answers, one more pass and round trip each). Never with scene loads in the stream.
+    private readonly Dictionary<int, (string Request, string Line)> after = [];
+    private Dictionary<int, (string Request, string Line)> reusable = [];
+    private volatile bool transported;
+
     /// <summary>Initializes a new instance of the <see cref="PipelineSession"/> class and starts its reader.</summary>
     /// <param name="child">The child (its answers are read by this session's reader until <see cref="Finish"/>).</param>
     /// <param name="timeout">The most one answer may take, counted from its request or the previous answer, whichever is later.</param>
     /// <param name="loadedIds">The scene ids the child holds now.</param>
-    public PipelineSession(LineProcess child, TimeSpan timeout, IEnumerable<string> loadedIds)
+    /// <param name="reader">The thread that reads the answers (the adapter's, idle between sessions).</param>
+    public PipelineSession(LineProcess child, TimeSpan timeout, IEnumerable<string> loadedIds, ReaderThread reader)
     {
         this.child = child;
         this.timeout = timeout;
         maybeLoaded = [.. loadedIds];
-        reader = new Thread(Read) { IsBackground = true, Name = "acphys pipeline reader" };
-        reader.Start();
+        this.reader = reader;
+        reader.Start(Read);
     }
 
     /// <summary>Gets a value indicating whether the query being built is streamed (its scene loads then travel in the stream too).</summary>
@@ -102,7 +111,7 @@ internal sealed partial class PipelineSession : IDisposable
                 : Live(live);
         }
 
-        return Speculate(at, name, shape, request, interpret, guess);
+        return reusable.Count > 0 && !transported ? Reuse(at, name, shape, request, interpret, guess) : Speculate(at, name, shape, request, interpret, guess);
     }
 
     /// <summary>Sends a scene load or unload within the speculative pass, answered at once with its guess.</summary>
@@ -117,6 +126,7 @@ internal sealed partial class PipelineSession : IDisposable
     /// <returns>The guess.</returns>
     public T Transport<T>(string name, Answer<T> shape, RequestLine request, Func<string, string, T> interpret, T guess, string? loads, string? unloads)
     {
+        transported = true;
         if (loads is not null)
         {
             lock (sync)
@@ -181,6 +191,9 @@ internal sealed partial class PipelineSession : IDisposable
             names.RemoveRange(frontier, names.Count - frontier);
         }
 
+        reusable = transported || divergedLine is null || failure is not null ? [] : after.Where(e => e.Key >= frontier).ToDictionary();
+        after.Clear();
+
         next = 0;
         if (childFailure is null && !child.Dead)
         {
@@ -197,8 +210,7 @@ internal sealed partial class PipelineSession : IDisposable
 
         inFlight.Dispose();
         inFlight = [];
-        reader = new Thread(Read) { IsBackground = true, Name = "acphys pipeline reader" };
-        reader.Start();
+        reader.Start(Read);
     }
 
     /// <inheritdoc/>
@@ -276,6 +288,43 @@ internal sealed partial class PipelineSession : IDisposable
 
         awaited[at] = (line.Text, received);
         return interpret(line.Text, received);
+    }
+
+    // A query after the frontier whose request is the one the previous pass sent in this slot, every slot before it
+    // since the frontier having been the same too: the child's answer read then is the live run's answer. The first
+    // request that differs (or a slot the previous pass never sent) ends the reuse for the rest of the pass.
+    private T Reuse<T>(int at, string name, Answer<T> shape, Func<RequestLine> request, Func<string, string, T> interpret, Func<T>? guess)
+    {
+        if (!reusable.TryGetValue(at, out var kept))
+        {
+            reusable.Clear();
+            return Speculate(at, name, shape, request, interpret, guess);
+        }
+
+        int outer = building;
+        building = at;
+        Streaming = true; // a scene the request loads travels in the stream, as in Speculate (and ends the reuse)
+        RequestLine line;
+        try
+        {
+            line = request();
+        }
+        finally
+        {
+            building = outer;
+            Streaming = false;
+        }
+
+        if (transported || line.Text != kept.Request)
+        {
+            reusable.Clear();
+            return Speculate(at, name, shape, () => line, interpret, guess);
+        }
+
+        next++;
+        names.Add(name);
+        awaited[at] = kept; // a later pass replays it as known
+        return interpret(kept.Request, kept.Line);
     }
 
     // A query before the frontier: its answer is known (the child's answer equalled the guess, or was kept).
