@@ -47,7 +47,7 @@ public sealed partial class ProgressTests
     [GeneratedRegex(@"acphys verify reference: \d+/\d+ done after")]
     private static partial Regex Heartbeat();
 
-    [GeneratedRegex(@"verify: stopped after (\d+) of 43 invariants, \d+ passed, \d+ failed, \d+ not tested, the rest not run")]
+    [GeneratedRegex(@"verify: stopped after (\d+) of 47 invariants, \d+ passed, \d+ failed, \d+ not tested, the rest not run")]
     private static partial Regex Stopped();
 
     /// <summary>acphys running with stdout and stderr collected as they come.</summary>

@@ -148,6 +148,10 @@ internal sealed class WatchedAdapter : ICellPhysics, IDisposable
         Call("find_cell", () => inner.FindCell(cell, origin, spheres, current));
 
     /// <inheritdoc/>
+    public FindCellResult FindCellParts(Scene scene, IReadOnlyList<Part> parts, bool loadCells) =>
+        Call(loadCells ? "find_cell_parts_transition" : "find_cell_parts_scene", () => inner.FindCellParts(scene, parts, loadCells));
+
+    /// <inheritdoc/>
     public IReadOnlyList<FindCellResult> FindCellWalk(WalkRequest walk) =>
         inner.Indoor.AceKeepsStaleCells
             ? Call("find_cell_walk", () => inner.FindCellWalk(walk)) // its array lives for the walk (facts §7 #6): asked whole

@@ -111,6 +111,23 @@ public interface ICellPhysics
         loadCells ? throw new NotSupportedException("find_cell_transition") : FindCell(scene, cell, spheres, current);
 
     /// <summary>
+    /// <c>find_cell_parts_scene</c> / <c>find_cell_parts_transition</c>: the parts / bounding-box cell list over a scene
+    /// (retail's find_bbox_cell_list; facts §3.4, §5.2, §5.3; docs/indoor.md, "Parts indoors"). The first part is the
+    /// anchor: its cell seeds the list (an env cell as itself, a land cell through the parts add_all_outside_cells),
+    /// the closure runs each cell's parts transit (an env cell's portals, a land cell's building portals), and static
+    /// placement (<paramref name="loadCells"/> false) runs the indoor visibility filter. There is no containing-cell
+    /// pick: <see cref="FindCellResult.Containing"/> is <see cref="CellId.None"/>. Offered when <see cref="Ops"/> has
+    /// <see cref="Op.FindCellPartsScene"/> (static) or <see cref="Op.FindCellPartsTransition"/> (transition); the default
+    /// offers neither, so an implementation that does not override it is reported NOT TESTED on the parts indoors.
+    /// </summary>
+    /// <param name="scene">The scene.</param>
+    /// <param name="parts">The parts (each in its own cell's block frame); the first is the anchor.</param>
+    /// <param name="loadCells">True for a transition query (no visibility filter).</param>
+    /// <returns>The cells in insertion order (load hints included, <see cref="FindCellResult.Loaded"/>), no containing cell.</returns>
+    FindCellResult FindCellParts(Scene scene, IReadOnlyList<Part> parts, bool loadCells) =>
+        throw new NotSupportedException(loadCells ? "find_cell_parts_transition" : "find_cell_parts_scene");
+
+    /// <summary>
     /// <c>outside_cells</c> with the position's own point (block frame), which retail uses only when
     /// <paramref name="spheres"/> is empty (facts §3.3 step 3). The default ignores the point: override it.
     /// </summary>

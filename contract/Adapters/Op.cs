@@ -40,6 +40,12 @@ public enum Op
     /// <summary><c>find_cell_transition</c>: find_cell_scene as a movement transition asks it (no visibility filter); an optional extension of protocol v1.</summary>
     FindCellTransition = 1 << 10,
 
+    /// <summary><c>find_cell_parts_scene</c>: the parts / bounding-box cell list over a scene as static placement (visibility filter on; facts §5.2, §5.3); an optional extension of protocol v1.</summary>
+    FindCellPartsScene = 1 << 11,
+
+    /// <summary><c>find_cell_parts_transition</c>: the parts cell list over a scene as a movement transition asks it (no visibility filter); an optional extension of protocol v1.</summary>
+    FindCellPartsTransition = 1 << 12,
+
     /// <summary>Every LandDefs operation.</summary>
     LandDefs = BlockIdToLcoord | GidToLcoord | LcoordToGid | InboundValidCellId | GetOutsideLcoord | AdjustToOutside,
 
@@ -51,7 +57,7 @@ public enum Op
     /// (<c>load_scene</c>, <c>dat_records</c>, <c>find_cell_walk</c>, <c>pipeline</c>) is not an operation: protocol v1
     /// negotiates it (<see cref="ITransport"/>; AcPhys.Protocol's <c>Capability</c>).
     /// </summary>
-    All = OpenLand | FindCellScene | FindCellTransition,
+    All = OpenLand | FindCellScene | FindCellTransition | FindCellPartsScene | FindCellPartsTransition,
 }
 
 /// <summary>Protocol names of <see cref="Op"/> values.</summary>
@@ -70,6 +76,8 @@ public static class OpNames
         (Op.OutsideCellsParts, "outside_cells_parts"),
         (Op.FindCellScene, "find_cell_scene"),
         (Op.FindCellTransition, "find_cell_transition"),
+        (Op.FindCellPartsScene, "find_cell_parts_scene"),
+        (Op.FindCellPartsTransition, "find_cell_parts_transition"),
     ];
 
     /// <summary>Returns the protocol names of every flag set in <paramref name="ops"/>.</summary>

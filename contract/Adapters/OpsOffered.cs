@@ -91,6 +91,10 @@ public sealed class OpsOffered(ICellPhysics inner, Op mask) : ICellPhysics, ITra
     public IReadOnlyList<FindCellResult> FindCellWalk(WalkRequest walk) =>
         Need(walk.LoadCells ? Op.FindCellTransition : walk.Scene is null ? Op.FindCell : Op.FindCellScene).FindCellWalk(walk);
 
+    /// <inheritdoc/>
+    public FindCellResult FindCellParts(Scene scene, IReadOnlyList<Part> parts, bool loadCells) =>
+        Need(loadCells ? Op.FindCellPartsTransition : Op.FindCellPartsScene).FindCellParts(scene, parts, loadCells);
+
     private ICellPhysics Need(Op op) =>
         (Ops & op) != 0 ? inner : throw new NotSupportedException($"{inner.Name} is offered without {OpNames.Names(op)[0]}");
 }

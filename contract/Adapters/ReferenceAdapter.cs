@@ -145,6 +145,18 @@ public sealed class ReferenceAdapter(PickPolicy pick = PickPolicy.Retail, PartsF
     }
 
     /// <inheritdoc/>
+    /// <remarks>Core's <see cref="ScenePartsQuery"/> in this adapter's indoor, parts and volume modes; a fresh array per query.</remarks>
+    public FindCellResult FindCellParts(Scene scene, IReadOnlyList<Part> parts, bool loadCells)
+    {
+        ArgumentNullException.ThrowIfNull(scene);
+        ArgumentNullException.ThrowIfNull(parts);
+        var array = scratch ??= new CellArray();
+        array.Reset();
+        bool hits = ScenePartsQuery.FindCellList(array, SceneBuild.Build(scene, Volumes), [.. parts], loadCells, Indoor with { AceKeepsStaleCells = false }, partsFidelity);
+        return new FindCellResult(array.ToIdArray(), CellId.None) { HitsInteriorCell = hits, Loaded = LoadedFlags(array) };
+    }
+
+    /// <inheritdoc/>
     public IReadOnlyList<CellId> OutsideCellsParts(IReadOnlyList<Part> parts)
     {
         var array = scratch ??= new CellArray();

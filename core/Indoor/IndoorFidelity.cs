@@ -2,7 +2,7 @@ namespace AcPhys.Core;
 
 /// <summary>
 /// Where ACE and retail differ on the indoor paths (facts §7 #6–#13, #9 included), plus one non-retail fix a port may choose.
-/// Retail by default. The parts-variant difference #14 is not modelled (no parts transit indoors yet).
+/// Retail by default. The parts-variant difference #14 is a parameter of EnvTransitParts.CheckBuildingTransit only, not a declared mode.
 /// </summary>
 /// <param name="AceKeepsStaleCells">#6: find_cell_list does not clear the array (entries of earlier calls survive).</param>
 /// <param name="AceEarlyReturn">#7: an interior pick returns at once, skipping the visibility filter.</param>

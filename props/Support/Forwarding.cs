@@ -47,4 +47,6 @@ internal abstract class Forwarding(ICellPhysics inner) : ICellPhysics
 
     public virtual FindCellResult FindCell(Scene? scene, CellId cell, IReadOnlyList<Sphere> spheres, CellId current, bool loadCells) =>
         Inner.FindCell(scene, cell, spheres, current, loadCells);
+
+    public virtual FindCellResult FindCellParts(Scene scene, IReadOnlyList<Part> parts, bool loadCells) => Inner.FindCellParts(scene, parts, loadCells);
 }

@@ -204,6 +204,42 @@ public sealed partial class ProcessAdapter : ICellPhysics, ITransport, IDisposab
         return Ask(MessageTable.OutsideCellsParts, parts);
     }
 
+    /// <summary>
+    /// <c>find_cell_parts_scene</c> or <c>find_cell_parts_transition</c>: the scene as <c>find_cell</c> sends it, the
+    /// parts as <c>outside_cells_parts</c> does (docs/protocol.md, "Parts indoors").
+    /// </summary>
+    /// <param name="scene">The scene.</param>
+    /// <param name="parts">The parts; the first is the anchor.</param>
+    /// <param name="loadCells">True for the transition kind.</param>
+    /// <returns>The cells, their loaded flags and HitsInteriorCell as reported; no containing cell.</returns>
+    /// <exception cref="UnposableQueryException">A part protocol v1 cannot carry (as <see cref="OutsideCellsParts"/>).</exception>
+    public FindCellResult FindCellParts(Scene scene, IReadOnlyList<Part> parts, bool loadCells)
+    {
+        ArgumentNullException.ThrowIfNull(scene);
+        ArgumentNullException.ThrowIfNull(parts);
+        for (int i = 0; i < parts.Count; i++)
+        {
+            if (PartBounds.Problem(parts[i], parts[0]) is var (field, problem))
+            {
+                throw new UnposableQueryException($"parts[{i}].{field}: {problem}: protocol v1 cannot carry this query (docs/protocol.md); case not judged");
+            }
+        }
+
+        var row = loadCells ? MessageTable.FindCellPartsTransition : MessageTable.FindCellPartsScene;
+        var query = new PartsInScene(scene, parts);
+        return Call(
+            row.Op,
+            row.Name,
+            row.Answer,
+            w =>
+            {
+                SceneField(w, scene);
+                row.WriteRequest(w, query);
+            },
+            a => Learn(row.Answer.Read(a), true),
+            r => Project(row.Ask(r, query), true));
+    }
+
     /// <inheritdoc/>
     public void Dispose()
     {

@@ -65,10 +65,27 @@ public static class MessageTable
         Answers.Cells,
         (impl, parts) => impl.OutsideCellsParts(parts));
 
+    /// <summary>
+    /// Gets <c>find_cell_parts_scene</c>: the parts cell list over a scene, static placement (docs/protocol.md, "Parts
+    /// indoors"). The row writes and reads <c>parts</c>; the scene travels as <c>find_cell</c>'s does (<c>scene_id</c> or
+    /// <c>scene</c>), written by the client and resolved by the server, which holds the loaded scenes.
+    /// </summary>
+    public static Message<PartsInScene, FindCellResult> FindCellPartsScene { get; } = ScenePartsRow(Op.FindCellPartsScene, false);
+
+    /// <summary>Gets <c>find_cell_parts_transition</c>: as <see cref="FindCellPartsScene"/>, asked as a movement transition (no visibility filter).</summary>
+    public static Message<PartsInScene, FindCellResult> FindCellPartsTransition { get; } = ScenePartsRow(Op.FindCellPartsTransition, true);
+
     /// <summary>Gets the rows by request name, as the server dispatches them.</summary>
     public static IReadOnlyDictionary<string, IServedMessage> ByName { get; } =
         new IServedMessage[] { BlockIdToLcoord, GidToLcoord, LcoordToGid, InboundValidCellId, GetOutsideLcoord, AdjustToOutside, OutsideCells, OutsideCellsParts }
             .ToDictionary(m => m.Name, StringComparer.Ordinal);
+
+    private static Message<PartsInScene, FindCellResult> ScenePartsRow(Op op, bool loadCells) => new(
+        op,
+        (w, q) => PartWire.WriteParts(w, "parts", q.Parts),
+        r => new PartsInScene(null, PartWire.ReadParts(r, "parts")),
+        Answers.FindCell,
+        (impl, q) => impl.FindCellParts(q.Scene ?? throw new InvalidOperationException("a parts query asked without its scene"), q.Parts, loadCells));
 
     private static void WriteCell(System.Text.Json.Utf8JsonWriter w, CellId id) => Wire.WriteCell(w, "cell", id);
 

@@ -85,7 +85,7 @@ public static class WorldFrame
 
                 Point(request["origin"], request["cell"], true);
                 break;
-            case "outside_cells_parts":
+            case "outside_cells_parts" or "find_cell_parts_scene" or "find_cell_parts_transition":
                 foreach (var part in request["parts"] as JsonArray ?? [])
                 {
                     Point(part?["origin"], part?["cell"], false);

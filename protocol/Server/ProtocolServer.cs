@@ -167,6 +167,10 @@ public sealed class ProtocolServer(ICellPhysics impl)
                     : WireProfile.Time("child: find_cell_walk", () => FindCellWalk(request));
             case "find_cell" or "find_cell_scene": // find_cell_scene is announced, never sent: a scene travels in find_cell (docs/protocol.md, "Scenes")
                 return FindCell(request);
+            case "find_cell_parts_scene":
+                return FindCellParts(request, MessageTable.FindCellPartsScene);
+            case "find_cell_parts_transition":
+                return FindCellParts(request, MessageTable.FindCellPartsTransition);
         }
 
         if (MessageTable.ByName.TryGetValue(op, out var message))
@@ -214,6 +218,45 @@ public sealed class ProtocolServer(ICellPhysics impl)
             ? impl.FindCell(Wire.ReadCell(request, "cell"), Wire.ReadOrigin(request), Wire.ReadSpheres(request, "spheres"), Wire.ReadOptionalCell(request, "current"))
             : impl.FindCell(scene, Wire.ReadCell(request, "cell"), Wire.ReadSpheres(request, "spheres"), Wire.ReadOptionalCell(request, "current"), loadCells);
         return Answers.FindCell.Line(r);
+    }
+
+    // find_cell_parts_scene / _transition: the scene as find_cell's (scene_id or inline; never open land), then the row.
+    private string FindCellParts(JsonElement request, Message<PartsInScene, FindCellResult> row)
+    {
+        if ((impl.Ops & row.Op) == 0)
+        {
+            return Error($"op \"{row.Name}\" not offered by {impl.Name}");
+        }
+
+        var sceneField = request.TryGetProperty("scene_id", out _) ? default : Wire.Field(request, "scene");
+        if (sceneField.ValueKind == JsonValueKind.Null)
+        {
+            return Error($"{row.Name} needs a scene (\"scene_id\" or \"scene\"): the parts variant indoors has no open-land form (outside_cells_parts is)");
+        }
+
+        if (ScenePartsOf(request, out var scene) is string refused)
+        {
+            return refused;
+        }
+
+        return row.Answer.Line(row.Ask(impl, row.ReadRequest(request) with { Scene = scene }));
+    }
+
+    // The scene of a parts request: loaded by id, or inline (read whatever scene queries the implementation offers).
+    private string? ScenePartsOf(JsonElement request, out Scene? scene)
+    {
+        scene = null;
+        if (request.TryGetProperty("scene_id", out _))
+        {
+            string id = Wire.ReadString(request, "scene_id");
+            lock (loadedScenes)
+            {
+                return loadedScenes.TryGetValue(id, out scene) ? null : Error($"unknown scene_id \"{Wire.Brief(id, 40)}\" (load_scene first)");
+            }
+        }
+
+        scene = ReadScene(Wire.Field(request, "scene"));
+        return null;
     }
 
     // find_cell_walk: the walk threaded here by the rule the tool's runners use (WalkThread), one answer per query.

@@ -68,4 +68,7 @@ internal sealed class AnnouncedRetail(ICellPhysics inner) : ICellPhysics
 
     /// <inheritdoc/>
     public IReadOnlyList<FindCellResult> FindCellWalk(WalkRequest walk) => inner.FindCellWalk(walk);
+
+    /// <inheritdoc/>
+    public FindCellResult FindCellParts(Scene scene, IReadOnlyList<Part> parts, bool loadCells) => inner.FindCellParts(scene, parts, loadCells);
 }

@@ -62,6 +62,9 @@ internal sealed class IndoorFaultyPhysics(PlantedFault fault) : ICellPhysics
         return new FindCellResult(array.ToIdArray(), result.Containing) { Loaded = LoadedFlags(), HitsInteriorCell = result.HitsInteriorCell };
     }
 
+    // The sphere-path faults leave the parts variant as the reference answers it.
+    public FindCellResult FindCellParts(Scene scene, IReadOnlyList<Part> parts, bool loadCells) => ReferenceAdapter.Instance.FindCellParts(scene, parts, loadCells);
+
     private CellScene Build(Scene scene)
     {
         var data = FaultyScenes.Transform(fault, scene);

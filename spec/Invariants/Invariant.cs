@@ -23,7 +23,7 @@ public abstract class Invariant
         Source = source;
         Requires = requires;
         RequiresPick = requiresPick;
-        SceneForms = sceneForms & SceneQueryKinds.Either;
+        SceneForms = sceneForms & (SceneQueryKinds.Either | PartsIndoorInvariants.Either);
     }
 
     /// <summary>Gets the stable ID.</summary>
@@ -85,7 +85,7 @@ public abstract class Invariant
         if (SceneForms != Op.None && (ops & SceneForms) == 0)
         {
             // A scene invariant stated for one kind only, and the implementation offers the other (issue #29).
-            return SceneQueryKinds.OffersScenes(ops)
+            return SceneQueryKinds.OffersScenes(ops) && (SceneForms & PartsIndoorInvariants.Either) == 0
                 ? $"states {(SceneForms == Op.FindCellScene ? "static placement" : "the movement transition")} only ({OpNames.Names(SceneForms)[0]}); implementation offers {string.Join(", ", OpNames.Names(ops & SceneQueryKinds.Either))}"
                 : "implementation lacks " + string.Join(" or ", OpNames.Names(SceneForms));
         }

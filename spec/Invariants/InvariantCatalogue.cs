@@ -9,10 +9,10 @@ namespace AcPhys.Spec.Invariants;
 public static class InvariantCatalogue
 {
     /// <summary>Gets every invariant, in catalogue order.</summary>
-    public static IReadOnlyList<Invariant> All { get; } = [.. LandInvariants.All, .. OutdoorInvariants.All, .. WalkInvariants.All, .. PartsInvariants.All, .. IndoorInvariants.All, .. IndoorExactInvariants.All, .. IndoorTieInvariants.All, .. ConformanceInvariants.All];
+    public static IReadOnlyList<Invariant> All { get; } = [.. LandInvariants.All, .. OutdoorInvariants.All, .. WalkInvariants.All, .. PartsInvariants.All, .. IndoorInvariants.All, .. IndoorExactInvariants.All, .. IndoorTieInvariants.All, .. PartsIndoorInvariants.All, .. ConformanceInvariants.All];
 
     /// <summary>Gets the scene invariants (over <see cref="SceneWalk"/>), conformance aside.</summary>
-    public static IReadOnlyList<Invariant<SceneWalk>> SceneInvariants { get; } = [.. IndoorInvariants.All, .. IndoorExactInvariants.All, .. IndoorTieInvariants.All];
+    public static IReadOnlyList<Invariant<SceneWalk>> SceneInvariants { get; } = [.. IndoorInvariants.All, .. IndoorExactInvariants.All, .. IndoorTieInvariants.All, .. PartsIndoorInvariants.All];
 
     /// <summary>Gets the invariants over <see cref="LandCase"/>.</summary>
     public static IReadOnlyList<Invariant<LandCase>> Land => LandInvariants.All;
