@@ -122,7 +122,7 @@ switch (command)
                 return 2;
             }
 
-            int ms = rest.Count > 0 ? int.Parse(rest.Dequeue(), System.Globalization.CultureInfo.InvariantCulture) : Warmup.DefaultBudgetMs;
+            int ms = rest.Count > 0 ? int.Parse(rest.Dequeue(), System.Globalization.CultureInfo.InvariantCulture) : AcPhys.Spec.Running.ToolEnvironment.DefaultFuzzWarmupMs;
             int ran = Warmup.Run(test, target, TimeSpan.FromMilliseconds(ms), (n, mean) => Console.WriteLine($"{n,7} {mean.TotalMicroseconds,10:F1} us/input"));
             Console.WriteLine($"{target.Name}: {ran} warm-up inputs in {ms} ms");
             return 0;
@@ -175,14 +175,14 @@ switch (command)
             // it runs stdin once. An exception escaping the test is reported to afl-fuzz as a crash. Targets whose
             // inputs can outlast the timeout run out of process: afl-fuzz kills the timed-out child, not the server.
             Action<Stream> serve = Replay.FromStream(test);
-            if (subject.IsExternal && !target.MayHang && Environment.GetEnvironmentVariable(PortSubject.CommandVariable) is { Length: > 0 }
+            if (subject.IsExternal && !target.MayHang && settings.ImplCommand is not null
                 && Environment.GetEnvironmentVariable("__AFL_SHM_ID") is { Length: > 0 })
             {
                 // The child is started; warm it (and this process's wire code) before afl-fuzz's first timed input. Not
                 // for a target run out of process: its child belongs to SharpFuzz's worker, restarted mid-campaign.
-                if (Warmup.BudgetFromEnvironment() is not { } budget)
+                if (settings.FuzzWarmup is not { } budget)
                 {
-                    Console.Error.WriteLine($"{Warmup.BudgetVariable}: expected milliseconds from 0 to 60000");
+                    Console.Error.WriteLine(settings.Problem(AcPhys.Spec.Running.ToolEnvironment.FuzzWarmupVariable));
                     return 2;
                 }
 

@@ -1,5 +1,4 @@
 using System.Diagnostics;
-using System.Globalization;
 using AcPhys.Fuzz.Targets;
 
 namespace AcPhys.Fuzz;
@@ -13,25 +12,6 @@ namespace AcPhys.Fuzz;
 /// </summary>
 internal static class Warmup
 {
-    /// <summary>The variable that sets the budget in milliseconds (0: no warm-up).</summary>
-    public const string BudgetVariable = "ACPHYS_FUZZ_WARMUP_MS";
-
-    /// <summary>The default budget: about two rounds of .NET tiered compilation under load (call counting starts 100 ms after the last new method).</summary>
-    public const int DefaultBudgetMs = 3000;
-
-    /// <summary>Reads the budget from <see cref="BudgetVariable"/>.</summary>
-    /// <returns>The budget, or null when the variable is malformed (the caller reports it).</returns>
-    public static TimeSpan? BudgetFromEnvironment()
-    {
-        string? text = Environment.GetEnvironmentVariable(BudgetVariable);
-        if (text is not { Length: > 0 })
-        {
-            return TimeSpan.FromMilliseconds(DefaultBudgetMs);
-        }
-
-        return int.TryParse(text, NumberStyles.None, CultureInfo.InvariantCulture, out int ms) && ms <= 60_000 ? TimeSpan.FromMilliseconds(ms) : null;
-    }
-
     /// <summary>Runs warm-up inputs until <paramref name="budget"/> is spent; findings here are not reported (afl-fuzz finds them again).</summary>
     /// <param name="test">The test (a child that fails is restarted by it, as under afl-fuzz).</param>
     /// <param name="target">The target (its seeds come first).</param>

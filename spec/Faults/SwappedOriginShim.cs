@@ -62,8 +62,10 @@ internal sealed class SwappedOriginShim(ICellPhysics inner) : ICellPhysics
     public FindCellResult FindCell(CellId cell, Vector3 origin, IReadOnlyList<Sphere> spheres, CellId current) => inner.FindCell(cell, Point(cell, origin), Shifted(cell, spheres), current);
 
     /// <inheritdoc/>
-    public IReadOnlyList<CellId> OutsideCellsParts(IReadOnlyList<Part> parts) =>
-        inner.OutsideCellsParts([.. parts.Select(p => p with { Frame = p.Frame with { Origin = Point(p.Cell, p.Frame.Origin) } })]);
+    public IReadOnlyList<CellId> OutsideCellsParts(IReadOnlyList<Part> parts) => inner.OutsideCellsParts(Shifted(parts));
+
+    /// <inheritdoc/>
+    public FindCellResult FindCellParts(Scene scene, IReadOnlyList<Part> parts, bool loadCells) => inner.FindCellParts(scene, Shifted(parts), loadCells);
 
     /// <inheritdoc/>
     public FindCellResult FindCell(Scene? scene, CellId cell, IReadOnlyList<Sphere> spheres, CellId current) => inner.FindCell(scene, cell, Shifted(cell, spheres), current);
@@ -84,6 +86,8 @@ internal sealed class SwappedOriginShim(ICellPhysics inner) : ICellPhysics
     private static float Y(CellId cell, float y) => Back(y, 192.0 * cell.BlockY, 192.0 * cell.BlockX);
 
     private static Vector3 Point(CellId cell, Vector3 p) => new(X(cell, p.X), Y(cell, p.Y), p.Z);
+
+    private static Part[] Shifted(IReadOnlyList<Part> parts) => [.. parts.Select(p => p with { Frame = p.Frame with { Origin = Point(p.Cell, p.Frame.Origin) } })];
 
     private static Sphere[] Shifted(CellId cell, IReadOnlyList<Sphere> spheres) => [.. spheres.Select(s => s with { Center = Point(cell, s.Center) })];
 }

@@ -62,6 +62,12 @@ public sealed class ToolEnvironment
     /// <summary>The fuzz harness's per-answer timeout of the child, seconds (0.1 to 3600).</summary>
     public const string ImplTimeoutVariable = "ACPHYS_IMPL_TIMEOUT";
 
+    /// <summary>The fuzz harness's warm-up of an <c>--impl-cmd</c> child before afl-fuzz's clock, milliseconds (0 to 60000; 0: none).</summary>
+    public const string FuzzWarmupVariable = "ACPHYS_FUZZ_WARMUP_MS";
+
+    /// <summary>The warm-up budget when <see cref="FuzzWarmupVariable"/> is unset, milliseconds.</summary>
+    public const int DefaultFuzzWarmupMs = 3000;
+
     private static readonly Lazy<ToolEnvironment> Read = new(() => new ToolEnvironment(Environment.GetEnvironmentVariable));
 
     private readonly Dictionary<string, string> problems = new(StringComparer.Ordinal);
@@ -115,6 +121,14 @@ public sealed class ToolEnvironment
             bool ok = double.TryParse(timeout, NumberStyles.Float, CultureInfo.InvariantCulture, out double t) && t is >= 0.1 and <= 3600;
             Note(!ok, ImplTimeoutVariable, $"{ImplTimeoutVariable}: expected seconds from 0.1 to 3600, got '{InputQuote.Line(timeout, 40)}'");
             ImplTimeout = ok ? TimeSpan.FromSeconds(t) : null;
+        }
+
+        FuzzWarmup = TimeSpan.FromMilliseconds(DefaultFuzzWarmupMs);
+        if (Text(FuzzWarmupVariable) is { } warmup)
+        {
+            bool ok = int.TryParse(warmup, NumberStyles.None, CultureInfo.InvariantCulture, out int ms) && ms <= 60_000;
+            Note(!ok, FuzzWarmupVariable, $"{FuzzWarmupVariable}: expected milliseconds from 0 to 60000, got '{InputQuote.Line(warmup, 40)}'");
+            FuzzWarmup = ok ? TimeSpan.FromMilliseconds(ms) : null;
         }
     }
 
@@ -171,6 +185,9 @@ public sealed class ToolEnvironment
 
     /// <summary>Gets the fuzz harness's per-answer timeout, or null when unset or malformed.</summary>
     public TimeSpan? ImplTimeout { get; }
+
+    /// <summary>Gets the fuzz harness's warm-up budget of an <c>--impl-cmd</c> child (the default when unset), or null when malformed.</summary>
+    public TimeSpan? FuzzWarmup { get; }
 
     /// <summary>Returns the settings a set of variables gives (tests; a variable absent from the map is unset).</summary>
     /// <param name="variables">Name → value.</param>
