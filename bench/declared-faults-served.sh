@@ -71,7 +71,7 @@ if [[ -z "$faults" ]]; then
 fi
 if [[ -z "$declarations" ]]; then
   # Every fidelity name the tool knows (its own error message lists them), then the pick.
-  known="$("${acphys[@]}" verify --fidelity '?' 2>&1 | sed -n 's/.*(known: \(.*\))$/\1/p' | tr -d ' ')"
+  known="$( { "${acphys[@]}" verify --fidelity '?' 2>&1 || true; } | sed -n 's/.*(known: \(.*\))$/\1/p' | tr -d ' ')"
   [[ -n "$known" ]] || { echo "declared-faults-served: could not list the fidelity names" >&2; exit 2; }
   declarations="$known,current-first"
 fi
