@@ -21,6 +21,9 @@ internal static class ExitCodes
     /// <summary>A dat container given on the command line cannot be read (truncated, a broken chain or directory, a refused record): the message names the file, the object and the offset (docs/dat-container.md).</summary>
     public const int BadDat = 5;
 
+    /// <summary><c>fuzz --impl</c>: the in-process port did not return on a seed or a finding outside afl-fuzz (seeds, triage, minimising) within the campaign's limit: HANG, the campaign stopped.</summary>
+    public const int PortHung = 6;
+
     /// <summary>An internal error of the tool (a bug, never bad input): one line on stderr, the stack trace with <c>ACPHYS_DEBUG=1</c> (sysexits EX_SOFTWARE).</summary>
     public const int InternalError = 70;
 

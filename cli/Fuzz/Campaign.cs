@@ -16,16 +16,21 @@ namespace AcPhys.Cli.Fuzz;
 internal sealed class Campaign(FuzzSettings s, CancellationToken stop)
 {
     private Subject subject = Subject.Reference;
+    private PortWatch watch = PortWatch.None;
     private (IReadOnlyList<string> Assemblies, int Probes)? port;
 
     /// <summary>Runs the campaign.</summary>
-    /// <returns>0 nothing found, 1 findings, 2 the campaign could not run.</returns>
+    /// <returns>0 nothing found, 1 findings, 2 the campaign could not run, 6 an in-process port hung outside afl-fuzz (<see cref="ExitCodes.PortHung"/>).</returns>
     public int Run()
     {
         subject = OpenSubject();
         try
         {
             return RunWith();
+        }
+        catch (PortHangException hang)
+        {
+            return Hung(hang);
         }
         finally
         {
@@ -44,7 +49,7 @@ internal sealed class Campaign(FuzzSettings s, CancellationToken stop)
 
         var opened = s.Port.Command is { } cmd
             ? PortSubject.Served(cmd, s.Port.Timeout, LineLimitSetting.Read(AcPhys.Spec.Running.ToolEnvironment.Process), line => Say("[impl] " + line))
-            : PortSubject.InProcess(s.Port.AssemblyPath!);
+            : PortSubject.InProcess(s.Port.AssemblyPath!, (watch = new PortWatch(s.PortCaseLimit)).Beat);
         try
         {
             if (PortSubject.Refusal(s.Target, opened) is { } why)
@@ -123,7 +128,7 @@ internal sealed class Campaign(FuzzSettings s, CancellationToken stop)
             : [];
         crashFiles.AddRange(Directory.EnumerateFiles(Path.Combine(s.CampaignDir, "seed-crashes")));
         Say($"triage: {crashFiles.Count} crash input(s)");
-        var groups = new CrashTriage(s, subject).Run(crashFiles);
+        var groups = new CrashTriage(s, subject, watch).Run(crashFiles);
         var hangFiles = Directory.Exists(s.SyncDir) ? Directory.EnumerateDirectories(s.SyncDir).SelectMany(InstanceStats.HangFiles).ToList() : [];
         if (new HangTriage(s, CancellationToken.None).Run(hangFiles) is { } hang)
         {
@@ -162,13 +167,55 @@ internal sealed class Campaign(FuzzSettings s, CancellationToken stop)
         int crashing = 0;
         foreach (var (name, data) in all)
         {
-            bool fails = s.Target.Classify(data, subject) is not null;
+            string input = name.StartsWith("corpus-", StringComparison.Ordinal)
+                ? "seed " + Shown(Path.Combine(s.SeedCorpusDir, name["corpus-".Length..]))
+                : $"built-in seed '{name}'";
+            bool fails = watch.Run(input, data, () => s.Target.Classify(data, subject)) is not null;
             crashing += fails ? 1 : 0;
             File.WriteAllBytes(Path.Combine(fails ? crashes : dir, name), data);
         }
 
         Say($"seeds: {all.Count} ({s.Target.Seeds.Count} built in, {all.Count - s.Target.Seeds.Count} from {Path.GetRelativePath(s.Root, s.SeedCorpusDir)}), {crashing} fail already");
         return (dir, crashing);
+    }
+
+    // An in-process port did not return on one case outside afl-fuzz: the thread inside it cannot be stopped, so the
+    // campaign stops here (acphys ends, and the thread with it). The input is confirmed as afl's hangs are, in a child
+    // acphys that can be killed (HangTriage), and written to REGRESSIONS/hangs/ with its replay line.
+    private int Hung(PortHangException hang)
+    {
+        var b = new StringBuilder();
+        var inv = CultureInfo.InvariantCulture;
+        b.AppendLine(inv, $"fuzz summary: target {s.Target.Name}, {s.Subject}: stopped, the port hung outside afl-fuzz");
+        b.AppendLine(inv, $"  - {HangTriage.Key}: the port did not return within {hang.Limit.TotalSeconds:0.###} s (5x --timeout-ms, at least 5 s) on {hang.Input}");
+        if (hang.Bytes is { } data)
+        {
+            string dir = Path.Combine(s.CampaignDir, "hung");
+            Directory.CreateDirectory(dir);
+            string file = Path.Combine(dir, Convert.ToHexStringLower(System.Security.Cryptography.SHA256.HashData(data))[..16]);
+            File.WriteAllBytes(file + ".tmp", data);
+            File.Move(file + ".tmp", file, overwrite: true);
+            var group = new HangTriage(s, CancellationToken.None).Run([file], _ => $"acphys fuzz {s.Target.Name}: {hang.Input}");
+            if (group is { Written: { } written })
+            {
+                b.AppendLine(inv, $"      {(group.Known ? "known" : "new")}: {Shown(written)} ({group.Signature})");
+                b.AppendLine(inv, $"      replay: {group.Replay}");
+            }
+            else
+            {
+                b.AppendLine(inv, $"      not written: {group?.Signature ?? "the input is not a case of this target"}");
+            }
+        }
+        else
+        {
+            b.AppendLine("      not written: the case that hung is a shrink candidate, not one input");
+        }
+
+        b.AppendLine(inv, $"  campaign folder: {s.CampaignDir}");
+        AtomicFile.WriteAllText(Path.Combine(s.CampaignDir, "summary.txt"), b.ToString());
+        Console.Out.Write(b.ToString());
+        Terminal.Error("fuzz", $"{HangTriage.Key}: {hang.Message}; the campaign was stopped (exit {ExitCodes.PortHung})");
+        return ExitCodes.PortHung;
     }
 
     private string? WriteDictionary()

@@ -16,7 +16,8 @@ namespace AcPhys.Cli.Fuzz;
 /// </summary>
 /// <param name="s">The settings.</param>
 /// <param name="subject">The implementation the campaign fuzzed, opened in acphys (a port's own assembly or one child).</param>
-internal sealed class CrashTriage(FuzzSettings s, Subject subject)
+/// <param name="watch">Bounds each case an in-process port runs (<see cref="PortWatch"/>).</param>
+internal sealed class CrashTriage(FuzzSettings s, Subject subject, PortWatch watch)
 {
     /// <summary>Gets the folder where raw inputs of non-physics findings and the triage report go.</summary>
     public string TriageDir => Path.Combine(s.CampaignDir, "triage");
@@ -31,7 +32,7 @@ internal sealed class CrashTriage(FuzzSettings s, Subject subject)
         foreach (string file in crashFiles)
         {
             byte[] data = File.ReadAllBytes(file);
-            if (s.Target.Classify(data, subject) is { } finding)
+            if (watch.Run($"crash input {file}", data, () => s.Target.Classify(data, subject)) is { } finding)
             {
                 findings.Add((file, data, finding));
             }
@@ -59,7 +60,7 @@ internal sealed class CrashTriage(FuzzSettings s, Subject subject)
     private TriageGroup Settle(string key, string signature, int count, string file, byte[] data, Finding finding)
     {
         string origin = $"afl {s.Target.Name} {Path.GetFileName(Path.GetDirectoryName(Path.GetDirectoryName(file)))}/{Path.GetFileName(file)} hex:{Hex(data)}";
-        if (finding.IsViolation && s.Target.Minimise(finding, subject, origin) is { } entry)
+        if (finding.IsViolation && watch.Run($"a shrink candidate of crash input {file}", null, () => s.Target.Minimise(finding, subject, origin)) is { } entry)
         {
             string path = Path.Combine(s.RegressionsDir, FailureFile.NameFor(entry));
             bool known = File.Exists(path);
@@ -91,7 +92,7 @@ internal sealed class CrashTriage(FuzzSettings s, Subject subject)
     {
         try
         {
-            return CaseReplay.Reproduces(entry, subject.Fresh());
+            return watch.Run("the shrunk case " + AcPhys.Formats.Values.InputQuote.Line(entry.Title, 80), null, () => CaseReplay.Reproduces(entry, subject.Fresh()));
         }
         catch (AcPhys.Contract.AdapterFailureException)
         {

@@ -32,6 +32,9 @@ internal sealed record FuzzSettings(
     /// <summary>Gets the assemblies of an <c>--impl</c> port to instrument (file names in the adapter's folder); empty: the default (<see cref="PortCopy"/>).</summary>
     public IReadOnlyList<string> Instrument { get; init; } = [];
 
+    /// <summary>Gets the most one case of an in-process port may take outside afl-fuzz (seeds, triage, minimising; a hang's replay child): 5× afl-fuzz's -t, at least 5 s.</summary>
+    public TimeSpan PortCaseLimit => TimeSpan.FromMilliseconds(Math.Max(5000, 5L * TimeoutMs));
+
     /// <summary>Gets the folder holding the instrumented copy of an <c>--impl</c> port (inside the campaign folder, refreshed when the port changes).</summary>
     public string PortDir => Path.Combine(CampaignDir, "port");
 

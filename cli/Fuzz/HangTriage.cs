@@ -27,12 +27,13 @@ internal sealed partial class HangTriage(FuzzSettings s, CancellationToken stop)
     private const int MaxTries = 3;
 
     /// <summary>Gets the most one call of the port may take in the replay child: 5× afl-fuzz's -t, at least 5 s.</summary>
-    public TimeSpan Limit => TimeSpan.FromMilliseconds(Math.Max(5000, 5L * s.TimeoutMs));
+    public TimeSpan Limit => s.PortCaseLimit;
 
     /// <summary>Triages the hang files of an in-process port's campaign.</summary>
-    /// <param name="hangFiles">The inputs afl-fuzz kept as hangs.</param>
+    /// <param name="hangFiles">The inputs afl-fuzz kept as hangs (or one input that hung acphys's own watch, <see cref="PortWatch"/>).</param>
+    /// <param name="originOf">How the stored case names where an input came from; null: afl's <c>INSTANCE/hangs/FILE</c>.</param>
     /// <returns>The HANG group, a not-reproduced group, or null when there is nothing to triage.</returns>
-    public TriageGroup? Run(IReadOnlyList<string> hangFiles)
+    public TriageGroup? Run(IReadOnlyList<string> hangFiles, Func<string, string>? originOf = null)
     {
         if (s.Port.AssemblyPath is not { } dll || hangFiles.Count == 0)
         {
@@ -43,7 +44,7 @@ internal sealed partial class HangTriage(FuzzSettings s, CancellationToken stop)
         foreach (string file in hangFiles.OrderBy(f => new FileInfo(f).Length).ThenBy(f => f, StringComparer.Ordinal).Take(MaxTries))
         {
             byte[] data = File.ReadAllBytes(file);
-            string origin = $"afl {s.Target.Name} {Path.GetFileName(Path.GetDirectoryName(Path.GetDirectoryName(file)))}/hangs/{Path.GetFileName(file)}";
+            string origin = originOf?.Invoke(file) ?? $"afl {s.Target.Name} {Path.GetFileName(Path.GetDirectoryName(Path.GetDirectoryName(file)))}/hangs/{Path.GetFileName(file)}";
             if (s.Target.AsEntry(data, $"{Key}: the port does not return within {Limit.TotalSeconds:0.###} s", origin) is not { } entry)
             {
                 return null;

@@ -25,14 +25,17 @@ public static class PortSubject
 
     /// <summary>Returns an in-process port: a new adapter instance wherever the reference would get a fresh one.</summary>
     /// <param name="path">The adapter assembly.</param>
+    /// <param name="opening">Called before each new instance is made (one per case): acphys's watch on a port that hangs outside afl-fuzz.</param>
     /// <returns>The subject.</returns>
     /// <exception cref="AdapterLoadException">The assembly holds no usable adapter.</exception>
-    public static Subject InProcess(string path)
+    public static Subject InProcess(string path, Action? opening = null)
     {
         var assembly = AdapterAssembly.Load(path);
         var first = assembly.Create();
         string label = $"--impl {Path.GetFileName(path)} ({AcPhys.Formats.Values.InputQuote.Line(first.Name ?? assembly.TypeName, 60)})";
-        return Subject.External(label, assembly.Create, freshEach: true);
+        return opening is null
+            ? Subject.External(label, assembly.Create, freshEach: true)
+            : Subject.External(label, () => { opening(); return assembly.Create(); }, freshEach: true);
     }
 
     /// <summary>Returns a port over protocol v1: one child, started at first use and again after it failed.</summary>
