@@ -3,8 +3,9 @@
 
 Standard library only. It reads one JSON request per line on stdin and answers one JSON object per line on stdout,
 in order (docs/protocol.md); logs go to stderr. It offers the LandDefs ops, outside_cells and find_cell on open land
-with the retail pick, and find_cell in scenes (the indoor half, in acphys_indoor.py beside this file: env cells,
-portals, buildings, static placement and movement transitions), written from the facts specification
+with the retail pick, find_cell in scenes (the indoor half, in acphys_indoor.py beside this file: env cells,
+portals, buildings, static placement and movement transitions) and the parts variant in scenes (acphys_parts.py:
+find_cell_parts_scene, find_cell_parts_transition), written from the facts specification
 (../shared/spec/retail-cell-physics-facts.md, cited as "facts §x"), not from the C# core.
 
 Run it under the suite:
@@ -30,6 +31,7 @@ import struct
 import sys
 
 import acphys_indoor
+import acphys_parts
 
 PROTOCOL = 1
 LAND_LENGTH = 2040          # lcoords per map side (facts §1.3)
@@ -38,7 +40,7 @@ BLOCK_LENGTH = 192.0        # metres per landblock side
 EPSILON = struct.unpack("<f", struct.pack("<f", 0.0002))[0]   # facts §1.5, the float32 value of 0.0002f
 ALL_OPS = ["blockid_to_lcoord", "gid_to_lcoord", "lcoord_to_gid", "inbound_valid_cellid",
            "get_outside_lcoord", "adjust_to_outside", "outside_cells", "find_cell", "find_cell_walk",
-           "find_cell_scene", "find_cell_transition", "load_scene",
+           "find_cell_scene", "find_cell_transition", "find_cell_parts_scene", "find_cell_parts_transition", "load_scene",
            "pipeline"]          # answers depend on the request alone: the tool may send the next before this is answered
 BUGS = ("clamp-106", "trunc-floor", "portal-side-inverted")
 
@@ -107,7 +109,25 @@ def read_spheres(items):
     return [(read_float(s["x"]), read_float(s["y"]), read_float(s["z"]), read_float(s["r"])) for s in items]
 
 
-# ---- LandDefs (facts §1-§2) ---------------------------------------------------------------------------------------
+def read_vector(item, names="xyz"):
+    if not isinstance(item, dict):
+        raise BadRequest("expected an object {%s}" % ", ".join(names))
+    return tuple(read_float(item[n]) for n in names)
+
+
+def read_parts(items):
+    """The parts of find_cell_parts_* (docs/protocol.md, "Parts indoors"): float32 numbers, each part in its own cell."""
+    if not isinstance(items, list):
+        raise BadRequest("parts must be a list")
+    parts = []
+    for p in items:
+        if not isinstance(p, dict) or not isinstance(p.get("always2d", False), bool):
+            raise BadRequest("a part is an object {cell, origin, rotation, min, max, r, always2d}")
+        parts.append(acphys_parts.Part(read_cell(p["cell"]), read_vector(p["origin"]), read_vector(p["rotation"], "xyzw"),
+                                       read_vector(p["min"]), read_vector(p["max"]), read_float(p["r"]),
+                                       p.get("always2d", False)))
+    return parts
+
 
 def read_origin(request):
     """the optional "origin" {x, y, z}: the position's own point, sent only with an empty sphere list"""
@@ -118,6 +138,8 @@ def read_origin(request):
         raise BadRequest("origin must be an object {x, y, z}")
     return (read_float(o.get("x")), read_float(o.get("y")))
 
+
+# ---- LandDefs (facts §1-§2) ---------------------------------------------------------------------------------------
 
 def block_x(cell):
     return (cell >> 24) & 0xFF
@@ -391,6 +413,12 @@ def answer(request, ops):
         if scene is not None:
             return cell_answer(*scene.find_cell_list(cell, spheres, transition))
         return cell_answer(*find_cell(cell, spheres, read_origin(request)))
+    if op in ("find_cell_parts_scene", "find_cell_parts_transition"):
+        scene = SCENES.of(request)
+        if scene is None:
+            raise BadRequest("%s takes a scene (no open-land form)" % op)
+        ids, loaded = acphys_parts.find_cell_parts(scene, GRID, read_parts(request["parts"]), op.endswith("_transition"))
+        return cell_answer(ids, 0, loaded)
     if op == "find_cell_walk":
         ask = (lambda frame, spheres: scene.find_cell_list(frame, spheres, transition)) if scene is not None else None
         o = request["origin"]
@@ -408,7 +436,7 @@ def answer(request, ops):
 
 
 def main():
-    global BUG, SCENES
+    global BUG, SCENES, GRID
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--bug", choices=BUGS, default=os.environ.get("ACPHYS_PY_BUG") or None,
                         help="switch on a seeded bug (or set ACPHYS_PY_BUG)")
@@ -419,6 +447,7 @@ def main():
     BUG = args.bug
     land = acphys_indoor.Land(outside_cells=outside_cells, contains=land_square_contains, adjust_to_outside=adjust_to_outside)
     SCENES = acphys_indoor.Scenes(land, BUG)
+    GRID = acphys_parts.Grid(adjust_to_outside=adjust_to_outside, gid_to_lcoord=gid_to_lcoord, lcoord_to_gid=lcoord_to_gid)
     ops = ALL_OPS if not args.ops else [o for o in args.ops.split(",") if o]
 
     print("acphys_impl.py: protocol %d, ops %s%s" % (PROTOCOL, ",".join(ops), ", seeded bug " + BUG if BUG else ""),
@@ -479,6 +508,7 @@ class Requests:
 
 BUG = None
 SCENES = None
+GRID = None
 
 if __name__ == "__main__":
     main()
