@@ -14,69 +14,45 @@ namespace AcPhys.Spec.Faults;
 /// framed in its own cell); z, radii and answers are the inner implementation's. A block with bx = by is unharmed.
 /// </summary>
 /// <param name="inner">The implementation behind the shim.</param>
-internal sealed class SwappedOriginShim(ICellPhysics inner) : ICellPhysics
+internal sealed class SwappedOriginShim(ICellPhysics inner) : ForwardingPhysics(inner)
 {
     /// <inheritdoc/>
-    public string Name => inner.Name + " (world-frame shim, block axes swapped)";
+    public override string Name => Inner.Name + " (world-frame shim, block axes swapped)";
 
     /// <inheritdoc/>
-    public Op Ops => inner.Ops;
+    public override bool GetOutsideLcoord(CellId id, float x, float y, out Lcoord lcoord) => Inner.GetOutsideLcoord(id, X(id, x), Y(id, y), out lcoord);
 
     /// <inheritdoc/>
-    public PickPolicy Pick => inner.Pick;
+    public override AdjustResult AdjustToOutside(CellId id, float x, float y) => Inner.AdjustToOutside(id, X(id, x), Y(id, y));
 
     /// <inheritdoc/>
-    public IndoorFidelity Indoor => inner.Indoor;
+    public override IReadOnlyList<CellId> OutsideCells(CellId cell, IReadOnlyList<Sphere> spheres) => Inner.OutsideCells(cell, Shifted(cell, spheres));
 
     /// <inheritdoc/>
-    public OutdoorFidelity Outdoor => inner.Outdoor;
+    public override IReadOnlyList<CellId> OutsideCells(CellId cell, Vector3 origin, IReadOnlyList<Sphere> spheres) => Inner.OutsideCells(cell, Point(cell, origin), Shifted(cell, spheres));
 
     /// <inheritdoc/>
-    public bool BlockIdToLcoord(CellId id, out Lcoord lcoord) => inner.BlockIdToLcoord(id, out lcoord);
+    public override FindCellResult FindCell(CellId cell, IReadOnlyList<Sphere> spheres, CellId current) => Inner.FindCell(cell, Shifted(cell, spheres), current);
 
     /// <inheritdoc/>
-    public bool GidToLcoord(CellId id, out Lcoord lcoord) => inner.GidToLcoord(id, out lcoord);
+    public override FindCellResult FindCell(CellId cell, Vector3 origin, IReadOnlyList<Sphere> spheres, CellId current) => Inner.FindCell(cell, Point(cell, origin), Shifted(cell, spheres), current);
 
     /// <inheritdoc/>
-    public CellId LcoordToGid(int x, int y) => inner.LcoordToGid(x, y);
+    public override IReadOnlyList<CellId> OutsideCellsParts(IReadOnlyList<Part> parts) => Inner.OutsideCellsParts(Shifted(parts));
 
     /// <inheritdoc/>
-    public bool InboundValidCellId(CellId id) => inner.InboundValidCellId(id);
+    public override FindCellResult FindCellParts(Scene scene, IReadOnlyList<Part> parts, bool loadCells) => Inner.FindCellParts(scene, Shifted(parts), loadCells);
 
     /// <inheritdoc/>
-    public bool GetOutsideLcoord(CellId id, float x, float y, out Lcoord lcoord) => inner.GetOutsideLcoord(id, X(id, x), Y(id, y), out lcoord);
+    public override FindCellResult FindCell(Scene? scene, CellId cell, IReadOnlyList<Sphere> spheres, CellId current) => Inner.FindCell(scene, cell, Shifted(cell, spheres), current);
 
     /// <inheritdoc/>
-    public AdjustResult AdjustToOutside(CellId id, float x, float y) => inner.AdjustToOutside(id, X(id, x), Y(id, y));
-
-    /// <inheritdoc/>
-    public IReadOnlyList<CellId> OutsideCells(CellId cell, IReadOnlyList<Sphere> spheres) => inner.OutsideCells(cell, Shifted(cell, spheres));
-
-    /// <inheritdoc/>
-    public IReadOnlyList<CellId> OutsideCells(CellId cell, Vector3 origin, IReadOnlyList<Sphere> spheres) => inner.OutsideCells(cell, Point(cell, origin), Shifted(cell, spheres));
-
-    /// <inheritdoc/>
-    public FindCellResult FindCell(CellId cell, IReadOnlyList<Sphere> spheres, CellId current) => inner.FindCell(cell, Shifted(cell, spheres), current);
-
-    /// <inheritdoc/>
-    public FindCellResult FindCell(CellId cell, Vector3 origin, IReadOnlyList<Sphere> spheres, CellId current) => inner.FindCell(cell, Point(cell, origin), Shifted(cell, spheres), current);
-
-    /// <inheritdoc/>
-    public IReadOnlyList<CellId> OutsideCellsParts(IReadOnlyList<Part> parts) => inner.OutsideCellsParts(Shifted(parts));
-
-    /// <inheritdoc/>
-    public FindCellResult FindCellParts(Scene scene, IReadOnlyList<Part> parts, bool loadCells) => inner.FindCellParts(scene, Shifted(parts), loadCells);
-
-    /// <inheritdoc/>
-    public FindCellResult FindCell(Scene? scene, CellId cell, IReadOnlyList<Sphere> spheres, CellId current) => inner.FindCell(scene, cell, Shifted(cell, spheres), current);
-
-    /// <inheritdoc/>
-    public FindCellResult FindCell(Scene? scene, CellId cell, IReadOnlyList<Sphere> spheres, CellId current, bool loadCells) => inner.FindCell(scene, cell, Shifted(cell, spheres), current, loadCells);
+    public override FindCellResult FindCell(Scene? scene, CellId cell, IReadOnlyList<Sphere> spheres, CellId current, bool loadCells) => Inner.FindCell(scene, cell, Shifted(cell, spheres), current, loadCells);
 
     // A world-frame port is asked query by query (a world-frame server announces no find_cell_walk): the walk steps
     // through this shim's own queries, as ICellPhysics.FindCellWalk's default does.
     /// <inheritdoc/>
-    public IReadOnlyList<FindCellResult> FindCellWalk(WalkRequest walk) => WalkThread.AskEach(this, walk);
+    public override IReadOnlyList<FindCellResult> FindCellWalk(WalkRequest walk) => WalkThread.AskEach(this, walk);
 
     // The world value is exact in double (192 · block + a float); the way back subtracts the other axis's origin.
     private static float Back(float v, double there, double back) => float.IsFinite(v) ? (float)((there + v) - back) : v;
