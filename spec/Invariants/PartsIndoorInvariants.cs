@@ -93,9 +93,15 @@ internal static class PartsIndoorInvariants
 
         var anchor = q.Parts[0];
         var range = LandRange(q.Parts);
-        foreach (var id in cells)
+        for (int k = 0; k < cells.Count; k++)
         {
+            var id = cells[k];
             applied = true;
+            if (AceBlindHint(impl, scene, q, k))
+            {
+                continue;
+            }
+
             var env = id.IsEnv ? scene.GetEnvCell(id) : null;
             if (env is not null && id != anchor.Cell && !q.Parts.Any(p => Overlaps(p, env, Margin)))
             {
@@ -125,9 +131,10 @@ internal static class PartsIndoorInvariants
         }
 
         var listed = q.Answer.Cells.ToHashSet();
-        foreach (var id in q.Answer.Cells)
+        for (int k = 0; k < q.Answer.Cells.Count; k++)
         {
-            if (!id.IsEnv || scene.GetEnvCell(id) is not { } cell)
+            var id = q.Answer.Cells[k];
+            if (!id.IsEnv || scene.GetEnvCell(id) is not { } cell || AceBlindHint(impl, scene, q, k))
             {
                 continue;
             }
@@ -265,6 +272,35 @@ internal static class PartsIndoorInvariants
     // The closure runs only from a loaded anchor (facts §4 step 4: visible).
     private static bool Visible(CellScene scene, CellId anchor) =>
         anchor.IsIndoorByLowWord ? scene.GetEnvCell(anchor) is not null : anchor.IsLand && scene.IsLoaded(anchor.Landblock);
+
+    // Under a declared ace-neighbour-via-visible-cells a portal neighbour the listed cell does not see is not resolved but
+    // added as a load hint under its id (facts §7 #10, §5.1; not walked, no box test) and the filter keeps hints (§4
+    // step 5): a listed id that a listed loaded env cell leads to by a portal without seeing it, not reported as loaded.
+    // The sphere invariants excuse the same (IndoorInvariants.AceBlindHint).
+    private static bool AceBlindHint(ICellPhysics impl, CellScene scene, Query q, int k)
+    {
+        var id = q.Answer.Cells[k];
+        if (!impl.Indoor.AceNeighbourViaVisibleCells || !id.IsEnv || q.Answer.Loaded is { } loaded && k < loaded.Count && loaded[k])
+        {
+            return false;
+        }
+
+        foreach (var c in q.Answer.Cells)
+        {
+            if (c != id && scene.GetEnvCell(c) is { } e && !e.Sees(id))
+            {
+                foreach (var p in e.Portals)
+                {
+                    if (!p.LeadsOutside(impl.Indoor) && c.WithLow(p.OtherCellId) == id)
+                    {
+                        return true;
+                    }
+                }
+            }
+        }
+
+        return false;
+    }
 
     // Static placement from an indoor anchor keeps only the anchor's cell and the loaded cells it sees.
     private static bool Kept(Query q, CellId id) => !q.Filtered || id == q.Parts[0].Cell || (q.AnchorEnv?.Sees(id) ?? false);
