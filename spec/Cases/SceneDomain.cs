@@ -34,6 +34,11 @@ public sealed class SceneDomain : ICaseDomain<SceneWalk>
             yield return tag;
         }
 
+        foreach (var tag in (r.Plan as SideBySidePlan)?.WalkClasses(w) ?? [])
+        {
+            yield return tag;
+        }
+
         if (r.Hub is { } hub)
         {
             foreach (var tag in HubClasses.Of(hub, w))

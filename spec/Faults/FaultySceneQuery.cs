@@ -69,7 +69,7 @@ internal static class FaultySceneQuery
                 else if (entry.Id.IsLand)
                 {
                     OutdoorCells.AddAllOutsideCells(array, position, Vector3.Zero, spheres, scene);
-                    if (scene.GetBuilding(entry.Id) is { } building && InteriorFaults.AsksBuilding(entry.Id, position, spheres, defect))
+                    if (scene.GetBuilding(entry.Id) is { } building && InteriorFaults.AsksBuilding(scene, entry.Id, building, position, spheres, defect))
                     {
                         hits |= FaultyTransit.FindBuildingTransitCells(array, scene, entry.Id, building, spheres, defect);
                     }

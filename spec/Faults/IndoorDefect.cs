@@ -101,4 +101,7 @@ internal enum IndoorDefect
 
     /// <summary>Issue 41: building entry is asked only when the query starts outdoors.</summary>
     BuildingEntryOutdoorsOnly,
+
+    /// <summary>Issue 41: from indoors, building entry asks only the building whose rooms hold the position's cell.</summary>
+    BuildingOwnBuildingIndoors,
 }

@@ -44,8 +44,15 @@ public static class InteriorFaults
         "facts §5.3, §4 step 4a: the closure asks the building of every land cell in the array, also of land cells added through an exit portal of the building the body is in; a port reasoned \"indoors, we are already in a building\" and skipped it, so leaving one house through its door while touching the neighbour's room (row houses, doors a body-width apart) misses that room.",
         ["BUILDING-ENTRY-COMPLETE", "FIND-CELL-CONFORMANCE"]);
 
+    /// <summary>From indoors, building entry asks only the body's own building.</summary>
+    public static readonly PlantedFault BuildingEntryOwnBuildingOnly = new(
+        "building-entry-own-building-only",
+        "from indoors, building entry asks only the building the body is in: leaving one house through its door while touching the next house's room never enters that room",
+        "facts §4 step 4a, §5.3: every land cell in the array asks its own SortCell's building, whoever's rooms the position is in; a port reasoned \"a body inside a building can only re-enter its own building through a door\" and, for an indoor position, skipped every other building (its own building's sealed closet is still entered; doors a body-width apart or row houses sharing a wall are not).",
+        ["BUILDING-ENTRY-COMPLETE", "FIND-CELL-CONFORMANCE"]);
+
     /// <summary>Gets every fault of this list.</summary>
-    public static IReadOnlyList<PlantedFault> All { get; } = [BspBoundStrict, ExitStraddleInclusive, HintBoundInclusive, BuildingCentreCellOnly, BuildingEntryOutdoorsOnly];
+    public static IReadOnlyList<PlantedFault> All { get; } = [BspBoundStrict, ExitStraddleInclusive, HintBoundInclusive, BuildingCentreCellOnly, BuildingEntryOutdoorsOnly, BuildingEntryOwnBuildingOnly];
 
     /// <summary>Returns the code defect a fault of this list plants (none for another fault or a volume fault).</summary>
     /// <param name="fault">The fault.</param>
@@ -56,6 +63,7 @@ public static class InteriorFaults
         "hint-bound-inclusive" => IndoorDefect.HintBoundInclusive,
         "building-centre-cell-only" => IndoorDefect.BuildingCentreCellOnly,
         "building-entry-outdoors-only" => IndoorDefect.BuildingEntryOutdoorsOnly,
+        "building-entry-own-building-only" => IndoorDefect.BuildingOwnBuildingIndoors,
         _ => IndoorDefect.None,
     };
 
@@ -69,16 +77,23 @@ public static class InteriorFaults
     };
 
     /// <summary>Whether building entry asks a walked land cell's building (retail: always, facts §5.3).</summary>
+    /// <param name="scene">The scene.</param>
     /// <param name="land">The walked land cell.</param>
+    /// <param name="building">Its building.</param>
     /// <param name="position">The position's cell.</param>
     /// <param name="spheres">Centres in the position's block frame.</param>
     /// <param name="defect">The defect.</param>
     /// <returns>False when the defect skips it.</returns>
-    internal static bool AsksBuilding(CellId land, CellId position, ReadOnlySpan<Sphere> spheres, IndoorDefect defect)
+    internal static bool AsksBuilding(IScene scene, CellId land, Building building, CellId position, ReadOnlySpan<Sphere> spheres, IndoorDefect defect)
     {
         if (defect == IndoorDefect.BuildingEntryOutdoorsOnly)
         {
             return !position.IsIndoorByLowWord;
+        }
+
+        if (defect == IndoorDefect.BuildingOwnBuildingIndoors)
+        {
+            return !position.IsIndoorByLowWord || Rooms(scene, land, building).Contains(position);
         }
 
         if (defect != IndoorDefect.BuildingCentreCellOnly || spheres.IsEmpty)
@@ -89,5 +104,29 @@ public static class InteriorFaults
         float x = spheres[0].Center.X, y = spheres[0].Center.Y;
         var at = position.IsLand ? position : position.WithLow(1);
         return LandDefs.AdjustToOutside(ref at, ref x, ref y) && at == land;
+    }
+
+    // A building's rooms as a port finds them: the cells behind its portals and every cell their cell portals reach.
+    private static HashSet<CellId> Rooms(IScene scene, CellId land, Building building)
+    {
+        var rooms = new HashSet<CellId>();
+        var queue = new Queue<CellId>(building.Portals.Select(p => land.WithLow(p.OtherCellId)));
+        while (queue.TryDequeue(out var id))
+        {
+            if (!rooms.Add(id) || scene.GetEnvCell(id) is not { } env)
+            {
+                continue;
+            }
+
+            foreach (var portal in env.Portals)
+            {
+                if (portal.OtherCellId != CellPortal.Outside)
+                {
+                    queue.Enqueue(id.WithLow(portal.OtherCellId));
+                }
+            }
+        }
+
+        return rooms;
     }
 }

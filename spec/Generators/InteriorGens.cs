@@ -28,7 +28,10 @@ public static class InteriorGens
         from start in Gen.Choose(0, 3)
         select new ExactBoundPlan(target, (192.0 * xb) + (24 * cx) + (inX / 1024.0), (192.0 * yb) + (24 * cy) + (inY / 1024.0), length, mesh, offsets, turns, flips, start);
 
-    /// <summary>Gets side-by-side plans: the land line between the rooms 1–7 land cells into a block, the facade 6–12 m into a land row.</summary>
+    /// <summary>
+    /// Gets side-by-side plans: the land line between the rooms 1–7 land cells into a block, the facade 6–12 m into a land
+    /// row; houses apart stand 0.125–1.5 radii apart (<see cref="SideBySidePlan.GapFraction"/>).
+    /// </summary>
     public static Gen<SideBySidePlan> SideBySide { get; } =
         from layout in Gen.Elements(SideLayout.RowHouses, SideLayout.Closet, SideLayout.Apart)
         from xb in Gen.Choose(1, 0xFD)
@@ -40,7 +43,8 @@ public static class InteriorGens
         from depth in Gen.Choose(12, 32).Select(i => i / 4f)
         from inset in Gen.Elements(0.25f, 0.5f, 0.75f)
         from flips in Gen.Choose(0, 3)
-        select new SideBySidePlan(layout, (192.0 * xb) + (24 * cx), (192.0 * yb) + (24 * cy) + (inY / 4.0), width, depth, inset, flips);
+        from gap in Gen.Elements(0.125f, 0.25f, 0.5f, 1.5f) // doors apart: below 1 − inset a body still in A reaches B; 1.5 r never does
+        select new SideBySidePlan(layout, (192.0 * xb) + (24 * cx), (192.0 * yb) + (24 * cy) + (inY / 4.0), width, depth, inset, flips, gap);
 
     /// <summary>Gets the recipes of both corners.</summary>
     public static Gen<SceneRecipe> Recipes { get; } = Gen.Frequency(

@@ -16,7 +16,10 @@ public enum SideLayout
     /// <summary>One building: a room and, beside it across a sealed wall on the land line, a closet with its own outside door.</summary>
     Closet,
 
-    /// <summary>Two one-room houses a body-width apart across the land line, their doors side by side.</summary>
+    /// <summary>
+    /// Two one-room houses less than (or, for a share, more than) a body's radius apart across the land line, their doors
+    /// side by side, so a body still in one house reaches the other's room across the gap.
+    /// </summary>
     Apart,
 }
 
@@ -35,13 +38,15 @@ public enum SideLayout
 /// <param name="Depth">Depth of the rooms, metres.</param>
 /// <param name="Inset">How far from the line the body walks, as a fraction of its radius (below 1: it touches both sides).</param>
 /// <param name="Flips">Bit 0 flips A's door plane, bit 1 B's (PortalSide false).</param>
-public sealed record SideBySidePlan(SideLayout Layout, double WorldX, double WorldY, float Width, float Depth, float Inset, int Flips) : ISceneWalkPlan
+/// <param name="GapFraction">The gap between the houses of <see cref="SideLayout.Apart"/> as a fraction of the body's
+/// radius (below 1 − <paramref name="Inset"/>: a body still in A reaches B's room); unused by the other layouts.</param>
+public sealed record SideBySidePlan(SideLayout Layout, double WorldX, double WorldY, float Width, float Depth, float Inset, int Flips, float GapFraction = SideBySidePlan.NarrowGap) : ISceneWalkPlan
 {
     /// <summary>The closet's width, metres.</summary>
     public const float ClosetWidth = 1.5f;
 
-    /// <summary>The gap between the houses of <see cref="SideLayout.Apart"/>, metres (about a body's width).</summary>
-    public const float Gap = 0.75f;
+    /// <summary>The narrowest gap of <see cref="SideLayout.Apart"/>, as a fraction of the radius (what shrinking tries).</summary>
+    public const float NarrowGap = 0.125f;
 
     /// <inheritdoc/>
     public string Shape => Layout switch
@@ -69,9 +74,49 @@ public sealed record SideBySidePlan(SideLayout Layout, double WorldX, double Wor
         };
     }
 
+    /// <summary>
+    /// Returns the classes the built walk reaches: <c>interiors:indoors-reach-other</c> (two houses; with
+    /// <c>interiors:doors-apart-reach</c> when they stand apart) or <c>interiors:indoors-reach-closet</c> when at some
+    /// position sphere 0's centre is still inside room A while a sphere straddles A's door plane and overlaps room B —
+    /// the body leaving A by its door while it touches B. Conservative: strict, unpadded, so retail surely adds the land
+    /// cell across the line by the exit (facts §5.1: −(r + EPS) &lt; d &lt; r + EPS) and B by that cell's building
+    /// (§5.3, §5.7: Outside only when d ≤ −(r + 0.01)).
+    /// </summary>
+    /// <param name="w">The walk this plan built.</param>
+    /// <returns>Tags.</returns>
+    internal IEnumerable<string> WalkClasses(SceneWalk w)
+    {
+        if (w.Walk.Body.Count == 0 || !Reaches(w))
+        {
+            yield break;
+        }
+
+        if (Layout == SideLayout.Closet)
+        {
+            yield return "interiors:indoors-reach-closet";
+            yield break;
+        }
+
+        yield return "interiors:indoors-reach-other";
+        if (Layout == SideLayout.Apart)
+        {
+            yield return "interiors:doors-apart-reach";
+        }
+    }
+
     /// <inheritdoc/>
     public IEnumerable<ISceneWalkPlan> Shrink()
     {
+        if (Layout == SideLayout.Apart)
+        {
+            // Two one-room houses either way: sharing a wall is the smaller scene to read; else the narrowest gap.
+            yield return this with { Layout = SideLayout.RowHouses };
+            if (GapFraction != NarrowGap)
+            {
+                yield return this with { GapFraction = NarrowGap };
+            }
+        }
+
         if (Flips != 0)
         {
             yield return this with { Flips = 0 };
@@ -91,14 +136,17 @@ public sealed record SideBySidePlan(SideLayout Layout, double WorldX, double Wor
     /// <inheritdoc/>
     public SceneWalk Build(SceneRecipe recipe)
     {
-        var scene = BuildScene();
-        float r = recipe.Radius, g = Inset * r, half = Layout == SideLayout.Apart ? Gap / 2 : 0;
+        float r = recipe.Radius, half = HalfGap(r);
+        var scene = BuildScene(half);
+        // Apart: the body walks Inset·r inside A's wall, so with GapFraction + Inset below 1 it still stands in A while it
+        // overlaps B's room across the gap (the other layouts keep at least half a metre from the line).
+        float e = Layout == SideLayout.Apart ? Inset * r : Math.Max(Inset * r, 0.5f);
         // Into the closet a quarter metre past the line, so the body still reaches the land cell its building is attached to.
-        float bx = Layout == SideLayout.Closet ? LineX + 0.25f : LineX + half + Math.Max(g, 0.5f);
+        float bx = Layout == SideLayout.Closet ? LineX + 0.25f : LineX + half + e;
         Vector3[] points =
         [
-            new(LineX - half - Math.Max(g, 0.5f), FacadeY + (Depth / 2), 0),
-            new(LineX - half - Math.Max(g, 0.5f), FacadeY - (r / 2), 0),
+            new(LineX - half - e, FacadeY + (Depth / 2), 0),
+            new(LineX - half - e, FacadeY - (r / 2), 0),
             new(bx, FacadeY - (r / 2), 0),
             new(bx, FacadeY + (Depth / 2), 0),
         ];
@@ -122,13 +170,68 @@ public sealed record SideBySidePlan(SideLayout Layout, double WorldX, double Wor
 
     /// <inheritdoc/>
     public override string ToString() =>
-        FormattableString.Invariant($"side-by-side {Layout} at ({WorldX:R}, {WorldY:R}) {Width}x{Depth} inset {Inset} flips {Flips}");
+        FormattableString.Invariant($"side-by-side {Layout} at ({WorldX:R}, {WorldY:R}) {Width}x{Depth} inset {Inset} flips {Flips}{(Layout == SideLayout.Apart ? $" gap {GapFraction}r" : string.Empty)}");
+
+    /// <summary>Returns half the gap between the two rooms for a body of radius <paramref name="radius"/>, metres.</summary>
+    /// <param name="radius">Sphere 0's radius.</param>
+    /// <returns>Zero unless <see cref="SideLayout.Apart"/>.</returns>
+    internal float HalfGap(float radius) => Layout == SideLayout.Apart ? GapFraction * radius / 2 : 0;
 
     private CellId CellId(int i) => Block.BlockCell.WithLow((ushort)(0x100 + i));
 
-    private Scene BuildScene()
+    /// <summary>
+    /// Whether some query of the built walk is asked from room A (its position's cell, the previous answer) while a
+    /// sphere straddles A's door plane and overlaps room B. Strict: sphere 0's centre is still inside A, and the
+    /// comparisons are unpadded (what retail surely reaches). Liberal: the previous centre was in A (the query starts
+    /// there) and the comparisons are padded past retail's (r + EPS for the exit, r + 0.01 for the BSP): every query in
+    /// which building entry from A can reach B.
+    /// </summary>
+    /// <param name="w">The walk this plan built.</param>
+    /// <param name="liberal">False for the strict test.</param>
+    /// <returns>True when such a query exists.</returns>
+    internal bool Reaches(SceneWalk w, bool liberal = false)
     {
-        float half = Layout == SideLayout.Apart ? Gap / 2 : 0, y0 = FacadeY, h = CottagePlan.Height;
+        float half = HalfGap(w.Walk.Body[0].Radius), y0 = FacadeY, y1 = FacadeY + Depth, h = CottagePlan.Height, pad = liberal ? 0.02f : 0;
+        float ax0 = LineX - half - Width, ax1 = LineX - half, bx0 = LineX + half, bx1 = bx0 + (Layout == SideLayout.Closet ? ClosetWidth : Width);
+        bool InA(Vector3 c) => liberal
+            ? c.X >= ax0 - pad && c.X <= ax1 + pad && c.Y >= y0 - pad && c.Y <= y1 + pad
+            : c.X > ax0 && c.X < ax1 && c.Y > y0 && c.Y < y1;
+        var p = w.Walk.Start;
+        bool fromA = true; // the walk starts in A
+        for (int i = 0; i <= w.Walk.Steps.Count; i++)
+        {
+            if (i > 0)
+            {
+                fromA = InA(p + w.Walk.Body[0].Offset);
+                p += new Vector3(w.Walk.Steps[i - 1], 0);
+            }
+
+            if (!(liberal ? fromA : InA(p + w.Walk.Body[0].Offset)))
+            {
+                continue; // not indoors in A
+            }
+
+            bool straddles = false, touches = false;
+            foreach (var s in w.Walk.Body)
+            {
+                var c = p + s.Offset;
+                straddles |= MathF.Abs(c.Y - y0) < s.Radius + pad;
+                var nearest = Vector3.Clamp(c, new Vector3(bx0, y0, 0), new Vector3(bx1, y1, h));
+                touches |= Vector3.Distance(c, nearest) < s.Radius + pad;
+            }
+
+            if (straddles && touches)
+            {
+                return true;
+            }
+        }
+
+        return false;
+    }
+
+    private Scene BuildScene(float half)
+    {
+        float y0 = FacadeY, h = CottagePlan.Height;
         float ax0 = LineX - half - Width, ax1 = LineX - half, bx0 = LineX + half, bx1 = bx0 + (Layout == SideLayout.Closet ? ClosetWidth : Width);
         SceneCell Room(int i, float x0, float x1, IReadOnlyList<CellId> visible)
         {
