@@ -91,6 +91,39 @@ public sealed partial class PipelineTests
         Assert.Equal("""{"scene_id":"s1"}""", old.Answer("""{"op":"load_scene","scene_id":"mine-1","scene":""" + Scene + "}"));
     }
 
+    // The parts variant in a scene (issue 41): a walk's parts queries are streamed like its sphere queries, one request
+    // each, every one guessed by the reference; the four planted parts faults must read the same either way.
+    [Fact(DisplayName = "PIPELINE-7: the parts-indoor planted faults served pipelined and waiting for each answer: the same verdict, shrunk case and replay seed per invariant")]
+    public void PartsFaultsGiveTheSameReportPipelined()
+    {
+        int replayed = 0;
+        foreach (string fault in new[] { "parts-first-part-only", "parts-box-untransformed", "parts-building-anchor-only", "parts-order-lost" })
+        {
+            string[] budget = ["--only", string.Join(',', AcPhys.Spec.Faults.PlantedFaults.Find(fault)!.CaughtBy), "--cases", "300", "--max-classes", "1", "--timeout", "60"];
+            var piped = Acphys.Run(["verify", "--impl-cmd", Acphys.ServeCommand + " --fault " + fault, .. budget]);
+            var waited = Acphys.Run(["verify", "--impl-cmd", Acphys.ServeCommand + " --fault " + fault + " --no-pipeline", .. budget]);
+            Assert.True(piped.Exit == 1 && waited.Exit == 1, $"{fault}: the fault must be caught both ways\n{piped}\n{waited}");
+            Assert.Equal(Report(waited.Out), Report(piped.Out));
+            replayed += Replayed(piped.Err);
+        }
+
+        Assert.True(replayed > 0, "no parts run was replayed: the differing-answer path was not exercised");
+    }
+
+    // A port killed, or answering garbage, in the middle of a stream of parts queries: the 40th request line is a parts
+    // query of the first walk (hello, load_scene, then the walk's queries, streamed without waiting).
+    [Theory(DisplayName = "PIPELINE-8: a pipelining child cut off or answering garbage mid-stream of parts queries is exit 2, naming the parts op, with no stack trace")]
+    [InlineData("serve-cut-after.sh", "closed its stdout instead of answering 'find_cell_parts_transition'")]
+    [InlineData("serve-garbage-at.sh", "answered 'find_cell_parts_transition' with something that is not protocol v1")]
+    public void PartsStreamBrokenMidwayIsExit2(string script, string message)
+    {
+        var run = Acphys.Run(["verify", "--impl-cmd", Acphys.Script(script) + " 40 " + Acphys.ServeCommand, "--only", "PARTS-INDOOR-COVERAGE", "--timeout", "60"]);
+        Assert.True(run.Exit == 2, run.ToString());
+        Assert.Contains(message, run.Err, StringComparison.Ordinal);
+        Assert.DoesNotContain("   at ", run.Err, StringComparison.Ordinal);
+        Assert.DoesNotContain("PASS", run.Out, StringComparison.Ordinal);
+    }
+
     // What a report says per failed invariant: its FAIL line, the shrunk case and the replay seed.
     private static string[] Report(string output) =>
         [.. output.Split('\n').Where(l => l.StartsWith("FAIL ", StringComparison.Ordinal) || l.StartsWith("  shrunk ", StringComparison.Ordinal) || l.StartsWith("  seed ", StringComparison.Ordinal)).Select(l => l.Trim())];

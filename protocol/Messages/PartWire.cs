@@ -22,15 +22,17 @@ internal static class PartWire
             w.WriteStartObject();
             Wire.WriteCell(w, "cell", p.Cell);
             Wire.WriteVector(w, "origin", p.Frame.Origin);
-            w.WriteStartObject("rotation");
-            Wire.WriteFloat(w, "x", p.Frame.Rotation.X);
-            Wire.WriteFloat(w, "y", p.Frame.Rotation.Y);
-            Wire.WriteFloat(w, "z", p.Frame.Rotation.Z);
-            Wire.WriteFloat(w, "w", p.Frame.Rotation.W);
+
+            // The rotation, box and radius repeat from step to step of a walk: their texts are kept (FloatTexts).
+            w.WriteStartObject("rotation"u8);
+            FloatTexts.Write(w, "x"u8, p.Frame.Rotation.X);
+            FloatTexts.Write(w, "y"u8, p.Frame.Rotation.Y);
+            FloatTexts.Write(w, "z"u8, p.Frame.Rotation.Z);
+            FloatTexts.Write(w, "w"u8, p.Frame.Rotation.W);
             w.WriteEndObject();
-            Wire.WriteVector(w, "min", p.Bounds.Min);
-            Wire.WriteVector(w, "max", p.Bounds.Max);
-            Wire.WriteFloat(w, "r", p.Radius);
+            FloatTexts.WriteVector(w, "min"u8, p.Bounds.Min);
+            FloatTexts.WriteVector(w, "max"u8, p.Bounds.Max);
+            FloatTexts.Write(w, "r"u8, p.Radius);
             w.WriteBoolean("always2d", p.Always2D);
             w.WriteEndObject();
         }

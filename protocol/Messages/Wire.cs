@@ -17,7 +17,7 @@ public static partial class Wire
     // The default limits (depth 64, no comments, no trailing commas) plus duplicate keys refused while parsing.
     private static readonly JsonDocumentOptions StrictOptions = new() { AllowDuplicateProperties = false };
 
-    private static readonly JsonWriterOptions WriterOptions = new() { Indented = false, Encoder = System.Text.Encodings.Web.JavaScriptEncoder.UnsafeRelaxedJsonEscaping };
+    internal static readonly JsonWriterOptions WriterOptions = new() { Indented = false, Encoder = System.Text.Encodings.Web.JavaScriptEncoder.UnsafeRelaxedJsonEscaping };
 
     /// <summary>Builds one message line (no newline) with the fields <paramref name="fields"/> writes.</summary>
     /// <param name="fields">Writes the object's properties.</param>

@@ -7,7 +7,17 @@ internal static class Program
 {
     private static int Main()
     {
-        var server = new Server();
+        Server server;
+        try
+        {
+            server = new Server(Environment.GetEnvironmentVariable("ACPHYS_EXAMPLE_BUG"));
+        }
+        catch (InputException e)
+        {
+            Console.Error.WriteLine("record-adapter: " + e.Message);
+            return 2;
+        }
+
         var utf8 = new UTF8Encoding(encoderShouldEmitUTF8Identifier: false);
         using var input = new StreamReader(Console.OpenStandardInput(), utf8);
         using var output = new StreamWriter(Console.OpenStandardOutput(), utf8) { NewLine = "\n" };

@@ -10,18 +10,36 @@ namespace RecordAdapter;
 
 /// <summary>
 /// Protocol v1 (docs/protocol.md) for scenes sent as dat records: <c>hello</c>, <c>load_scene</c> with <c>dat</c>,
-/// <c>find_cell</c> on a loaded scene, <c>unload_scene</c>. Every request gets one answer line; anything this adapter
+/// <c>find_cell</c>, <c>find_cell_walk</c>, <c>find_cell_parts_scene</c> and <c>find_cell_parts_transition</c> on a
+/// loaded scene, <c>unload_scene</c>. Every request gets one answer line; anything this adapter
 /// cannot read is answered <c>{"error": ...}</c> and the next request is served as usual.
 /// </summary>
 internal sealed class Server
 {
     private const int MaxScenes = 16;
-    private const string HelloAnswer = """{"protocol":1,"name":"record-adapter (example)","ops":["find_cell_scene","find_cell_transition","load_scene","dat_records","find_cell_walk","pipeline"],"pick":"retail"}""";
+    private const string HelloAnswer = """{"protocol":1,"name":"record-adapter (example)","ops":["find_cell_scene","find_cell_transition","load_scene","dat_records","find_cell_walk","find_cell_parts_scene","find_cell_parts_transition","pipeline"],"pick":"retail"}""";
     private static readonly JsonWriterOptions Compact = new() { Encoder = JavaScriptEncoder.UnsafeRelaxedJsonEscaping };
 
     private readonly Dictionary<string, CellScene> scenes = new(StringComparer.Ordinal);
+    private readonly bool partsAnchorOnly;
     private readonly CellArray array = new();
     private int loads;
+
+    /// <summary>Initializes a new instance.</summary>
+    /// <exception cref="InputException">A bug name this adapter does not know.</exception>
+    /// <param name="bug">
+    /// The example's seeded bug (<c>ACPHYS_EXAMPLE_BUG</c>), or null: <c>parts-anchor-only</c> answers a parts query
+    /// with the first part alone, a port that drops the rest of the object (e2e/RecordAdapterTests.cs serves it).
+    /// </param>
+    public Server(string? bug)
+    {
+        partsAnchorOnly = bug switch
+        {
+            null or "" => false,
+            "parts-anchor-only" => true,
+            _ => throw new InputException($"ACPHYS_EXAMPLE_BUG='{bug}' is not a bug of this adapter (known: parts-anchor-only)"),
+        };
+    }
 
     /// <summary>Answers one request line.</summary>
     /// <param name="line">The request.</param>
@@ -43,6 +61,8 @@ internal sealed class Server
                 "load_scene" => LoadScene(request),
                 "find_cell" => FindCell(request),
                 "find_cell_walk" => FindCellWalk(request),
+                "find_cell_parts_scene" => FindCellParts(request, "find_cell_parts_scene", loadCells: false),
+                "find_cell_parts_transition" => FindCellParts(request, "find_cell_parts_transition", loadCells: true),
                 "unload_scene" => UnloadScene(request),
                 var op => Error($"unknown op \"{op}\""),
             };
@@ -89,7 +109,8 @@ internal sealed class Server
         v.ValueKind == JsonValueKind.String && CellIdText.TryParse(v.GetString(), out var id) ? id : throw new InputException($"field \"{name}\" must be a cell id \"0xAABBCCCC\"");
 
     // A float32: a JSON number read as double and rounded, or one of the strings "NaN", "Infinity", "-Infinity".
-    private static float Float(JsonElement s, string name)
+    // at: where the object sits in the request (null: a sphere, a step or the origin).
+    internal static float Float(JsonElement s, string name, string? at = null)
     {
         if (s.TryGetProperty(name, out var v))
         {
@@ -112,7 +133,8 @@ internal sealed class Server
             }
         }
 
-        throw new InputException($"sphere field \"{name}\" must be a number or \"NaN\" / \"Infinity\" / \"-Infinity\"");
+        string field = at is null ? $"sphere field \"{name}\"" : $"field \"{at}.{name}\"";
+        throw new InputException($"{field} must be a number or \"NaN\" / \"Infinity\" / \"-Infinity\"");
     }
 
     private string LoadScene(JsonElement request)
@@ -247,11 +269,30 @@ internal sealed class Server
         });
     }
 
-    // One find_cell_list, its answer's fields written; returns the containing cell.
-    private CellId Query(Utf8JsonWriter w, CellScene scene, CellId cell, Sphere[] spheres, CellId current, bool loadCells)
+    // find_cell_parts_scene / _transition (docs/protocol.md, "Parts indoors"): the parts cell list of core's
+    // ScenePartsQuery over a loaded scene, retail's choices (as ReferenceAdapter); the transition kind runs no
+    // visibility filter. There is no containing-cell pick: "containing" is always null.
+    private string FindCellParts(JsonElement request, string op, bool loadCells)
     {
-        // What ReferenceAdapter does for a scene: find_cell_list with the retail pick; load_cells turns the filter off.
-        var result = SceneQuery.FindCellList(array, scene, cell, spheres, current, new CellQueryOptions(PickPolicy.Retail, true, loadCells));
+        var scene = LoadedScene(request, op);
+        var parts = PartsRequest.Read(request);
+        if (partsAnchorOnly)
+        {
+            parts = parts[..1];
+        }
+
+        bool hits = ScenePartsQuery.FindCellList(array, scene, parts, loadCells, IndoorFidelity.Retail);
+        return Line(w =>
+        {
+            WriteCells(w);
+            w.WriteNull("containing");
+            WriteLoaded(w);
+            w.WriteBoolean("hits_interior_cell", hits);
+        });
+    }
+
+    private void WriteCells(Utf8JsonWriter w)
+    {
         w.WriteStartArray("cells");
         for (int i = 0; i < array.Count; i++)
         {
@@ -259,6 +300,25 @@ internal sealed class Server
         }
 
         w.WriteEndArray();
+    }
+
+    private void WriteLoaded(Utf8JsonWriter w)
+    {
+        w.WriteStartArray("loaded");
+        for (int i = 0; i < array.Count; i++)
+        {
+            w.WriteBooleanValue(array[i].Loaded);
+        }
+
+        w.WriteEndArray();
+    }
+
+    // One find_cell_list, its answer's fields written; returns the containing cell.
+    private CellId Query(Utf8JsonWriter w, CellScene scene, CellId cell, Sphere[] spheres, CellId current, bool loadCells)
+    {
+        // What ReferenceAdapter does for a scene: find_cell_list with the retail pick; load_cells turns the filter off.
+        var result = SceneQuery.FindCellList(array, scene, cell, spheres, current, new CellQueryOptions(PickPolicy.Retail, true, loadCells));
+        WriteCells(w);
         if (result.Containing.IsNone)
         {
             w.WriteNull("containing");
@@ -268,13 +328,7 @@ internal sealed class Server
             w.WriteString("containing", CellIdText.Format(result.Containing));
         }
 
-        w.WriteStartArray("loaded");
-        for (int i = 0; i < array.Count; i++)
-        {
-            w.WriteBooleanValue(array[i].Loaded);
-        }
-
-        w.WriteEndArray();
+        WriteLoaded(w);
         w.WriteBoolean("hits_interior_cell", result.HitsInteriorCell);
         return result.Containing;
     }
