@@ -8,6 +8,7 @@
 #   ACPHYS_DLL=/path/acphys.dll bench/served-verdicts.sh   # another build (default: cli/bin/Release/net10.0/acphys.dll)
 #   bench/served-verdicts.sh --save DIR           # also keep each run's verdicts (DIR/FAULT.in.txt, DIR/FAULT.served.txt)
 #                                                 # so two builds can be compared: diff -r BEFORE AFTER (a refactor guard)
+#   bench/served-verdicts.sh --in-process-only --save DIR   # the in-process half only (a quicker refactor guard)
 #
 # Build first: dotnet build -c Release cli/AcPhys.Cli.csproj. The build is copied to a temporary folder, so rebuilding
 # while this runs does not change what it measures. Each run writes JUnit XML (--junit); the verdicts are read from it.
@@ -19,10 +20,11 @@ max_classes=1
 faults=""
 reference=reference
 save=""
+served=1
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 dll="${ACPHYS_DLL:-$root/cli/bin/Release/net10.0/acphys.dll}"
 
-usage() { sed -n '2,14p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; }
+usage() { sed -n '2,15p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; }
 while [[ $# -gt 0 ]]; do
   case "$1" in
     --cases) cases="$2"; shift 2 ;;
@@ -30,6 +32,7 @@ while [[ $# -gt 0 ]]; do
     --faults) faults="$2"; shift 2 ;;
     --no-reference) reference=""; shift ;;
     --save) save="$2"; shift 2 ;;
+    --in-process-only) served=""; shift ;;
     -h|--help) usage; exit 0 ;;
     *) echo "served-verdicts: unknown option $1" >&2; usage >&2; exit 2 ;;
   esac
@@ -71,7 +74,7 @@ PY
 count() { awk -v k="$2" '$2 == k' "$1" | wc -l | tr -d ' '; }
 
 started=$(date +%s)
-echo "served verdicts: $(echo "$faults" | tr ',' '\n' | wc -l | tr -d ' ') faults${reference:+ + the reference}, --cases $cases --max-classes $max_classes, build $dll"
+echo "served verdicts: $(echo "$faults" | tr ',' '\n' | wc -l | tr -d ' ') faults${reference:+ + the reference}, --cases $cases --max-classes $max_classes, $([[ -n "$served" ]] && echo "in process and served" || echo "in process only"), build $dll"
 echo "load at start: $(uptime | sed 's/.*load average: //')"
 differ=0
 broken=0
@@ -84,10 +87,29 @@ for fault in $reference ${faults//,/ }; do
   "${acphys[@]}" verify "${flag[@]}" "${common[@]}" --junit "$work/in.xml" > "$work/in.log" 2>&1
   rc_in=$?
   t1=$(date +%s.%N)
-  "${acphys[@]}" verify --impl-cmd "${acphys[*]} serve$serve_flag" "${common[@]}" --junit "$work/served.xml" > "$work/served.log" 2>&1
-  rc_served=$?
+  if [[ -n "$served" ]]; then
+    "${acphys[@]}" verify --impl-cmd "${acphys[*]} serve$serve_flag" "${common[@]}" --junit "$work/served.xml" > "$work/served.log" 2>&1
+    rc_served=$?
+  fi
   t2=$(date +%s.%N)
   set -e
+  if [[ -z "$served" ]]; then
+    if [[ ! -s "$work/in.xml" ]]; then
+      echo "$fault: NO REPORT (exit $rc_in in process)"
+      tail -3 "$work/in.log" | sed 's/^/    /'
+      broken=1
+      rm -f "$work/in.xml"
+      continue
+    fi
+    verdicts "$work/in.xml" > "$work/in.txt"
+    if [[ -n "$save" ]]; then
+      mkdir -p "$save"
+      { cat "$work/in.txt"; echo "exit $rc_in"; } > "$save/$fault.in.txt"
+    fi
+    echo "$fault: $(count "$work/in.txt" passed) passed, $(count "$work/in.txt" failed) failed, $(count "$work/in.txt" not-tested) not tested; exit $rc_in; $(printf '%.1f s in process' "$(echo "$t1 - $t0" | bc)")"
+    rm -f "$work/in.xml"
+    continue
+  fi
   times=$(printf '%.1f s in process, %.1f s served' "$(echo "$t1 - $t0" | bc)" "$(echo "$t2 - $t1" | bc)")
   if [[ ! -s "$work/in.xml" || ! -s "$work/served.xml" ]]; then
     echo "$fault: NO REPORT (exit $rc_in in process, $rc_served served; $times)"
@@ -124,4 +146,4 @@ if [[ $differ == 1 ]]; then
   echo "served-verdicts: verdicts differ between in process and served (see above)" >&2
   exit 1
 fi
-echo "served-verdicts: every verdict equal"
+if [[ -n "$served" ]]; then echo "served-verdicts: every verdict equal"; else echo "served-verdicts: every run reported (in process only: compare --save folders with diff -r)"; fi

@@ -39,4 +39,16 @@ public sealed class IntendedFindingTests
         Assert.DoesNotContain("your answers are the reference's if you declare", run.Out, StringComparison.Ordinal);
         Assert.Contains("  intended   no: ", run.Out, StringComparison.Ordinal);
     }
+
+    [Theory(DisplayName = "INTENDED-PROVED (issue 41): a parts fault indoors served under a declaration fails PARTS-INDOOR-CONFORMANCE, and its intended line names no declaration but says what differs")]
+    [InlineData("parts-order-lost", "ace")]
+    [InlineData("parts-first-part-only", "ace-neighbour-via-visible-cells")]
+    public void AServedPartsFaultIsNeverIntended(string fault, string declaration)
+    {
+        var run = Acphys.Run(["verify", "--impl-cmd", $"{Acphys.ServeCommand} --fault {fault} --fidelity {declaration}", "--only", "PARTS-INDOOR-CONFORMANCE", "--cases", "300", "--timeout", "60", "--max-classes", "1"]);
+        Assert.True(run.Exit == 1, run.ToString());
+        Assert.Contains("find_cell_parts_", run.Out, StringComparison.Ordinal);
+        Assert.DoesNotContain("your answers are the reference's if you declare", run.Out, StringComparison.Ordinal);
+        Assert.Contains("  intended   no: ", run.Out, StringComparison.Ordinal);
+    }
 }

@@ -4,8 +4,8 @@
 Standard library only. It reads one JSON request per line on stdin and answers one JSON object per line on stdout,
 in order (docs/protocol.md); logs go to stderr. It offers the LandDefs ops, outside_cells and find_cell on open land
 with the retail pick, find_cell in scenes (the indoor half, in acphys_indoor.py beside this file: env cells,
-portals, buildings, static placement and movement transitions) and the parts variant in scenes (acphys_parts.py:
-find_cell_parts_scene, find_cell_parts_transition), written from the facts specification
+portals, buildings, static placement and movement transitions) and the parts variant on open land and in scenes
+(acphys_parts.py: outside_cells_parts, find_cell_parts_scene, find_cell_parts_transition), written from the facts specification
 (../shared/spec/retail-cell-physics-facts.md, cited as "facts §x"), not from the C# core.
 
 Run it under the suite:
@@ -39,7 +39,7 @@ CELL_LENGTH = 24.0          # metres per land cell side
 BLOCK_LENGTH = 192.0        # metres per landblock side
 EPSILON = struct.unpack("<f", struct.pack("<f", 0.0002))[0]   # facts §1.5, the float32 value of 0.0002f
 ALL_OPS = ["blockid_to_lcoord", "gid_to_lcoord", "lcoord_to_gid", "inbound_valid_cellid",
-           "get_outside_lcoord", "adjust_to_outside", "outside_cells", "find_cell", "find_cell_walk",
+           "get_outside_lcoord", "adjust_to_outside", "outside_cells", "outside_cells_parts", "find_cell", "find_cell_walk",
            "find_cell_scene", "find_cell_transition", "find_cell_parts_scene", "find_cell_parts_transition", "load_scene",
            "pipeline"]          # answers depend on the request alone: the tool may send the next before this is answered
 BUGS = ("clamp-106", "trunc-floor", "portal-side-inverted")
@@ -116,7 +116,7 @@ def read_vector(item, names="xyz"):
 
 
 def read_parts(items):
-    """The parts of find_cell_parts_* (docs/protocol.md, "Parts indoors"): float32 numbers, each part in its own cell."""
+    """The parts of outside_cells_parts and find_cell_parts_* (docs/protocol.md): float32 numbers, each part in its own cell."""
     if not isinstance(items, list):
         raise BadRequest("parts must be a list")
     parts = []
@@ -400,6 +400,8 @@ def answer(request, ops):
     if op == "outside_cells":
         cells = outside_cells(read_cell(request["cell"]), read_spheres(request["spheres"]), read_origin(request))
         return {"cells": [cell_text(c) for c in cells]}
+    if op == "outside_cells_parts":
+        return {"cells": [cell_text(c) for c in acphys_parts.outside_cells_parts(GRID, read_parts(request["parts"]))]}
     if op == "load_scene":
         return SCENES.load(request)
     if op == "unload_scene":

@@ -1,4 +1,5 @@
-"""The parts (bounding-box) cell list in a scene for acphys_impl.py: find_cell_parts_scene and find_cell_parts_transition.
+"""The parts (bounding-box) cell list for acphys_impl.py: on open land (outside_cells_parts) and in a scene
+(find_cell_parts_scene and find_cell_parts_transition).
 
 Standard library only. Written from the facts specification (../shared/spec/retail-cell-physics-facts.md, "facts §x")
 and docs/protocol.md ("Parts indoors"), not from the C# core. An object given by its parts instead of spheres: each part
@@ -209,6 +210,26 @@ class PartsList:
                 self.array.add(cell.id, True)
                 self.env_transit(cell)
                 return
+
+
+class OpenLand:
+    """The world of outside_cells_parts: open land with every block loaded, no env cell and no building."""
+
+    class EveryBlock:
+        def __contains__(self, block):
+            return True
+
+    blocks = EveryBlock()
+
+
+def outside_cells_parts(grid, parts):
+    """outside_cells_parts (docs/protocol.md, facts §3.4): the land cells of the parts' boxes on open land, in insertion
+    order, from a fresh array (its AddedOutside latch clear, facts §3.5); the first part is the anchor. No parts, no cells."""
+    if not parts:
+        return []
+    query = PartsList(OpenLand(), grid, parts)
+    query.add_outside()
+    return query.array.ids
 
 
 def find_cell_parts(scene, grid, parts, load_cells):

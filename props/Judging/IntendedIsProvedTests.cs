@@ -42,7 +42,7 @@ public sealed class IntendedIsProvedTests
     public void FaultIsNeverIntended(string faultId)
     {
         var impl = PlantedFaults.Create(faultId);
-        foreach (var invariant in ConformanceInvariants.All.Where(i => i.IsTestable(impl)))
+        foreach (var invariant in ConformanceInvariants.Every.Where(i => i.IsTestable(impl)))
         {
             var result = invariant.Run(impl, Cases, PropertyRun.SeedFor(invariant.Id), maxClasses: 1);
             if (result.Status != ResultStatus.Failed || result.Violation?.Case is not AnyCase shrunk)
@@ -56,17 +56,37 @@ public sealed class IntendedIsProvedTests
         }
     }
 
-    [Theory(DisplayName = "INTENDED-PROVED: a port bug that only reorders or only adds cells is never called intended")]
-    [InlineData("reorder")]
-    [InlineData("add")]
-    public void ReorderingOrAddingIsNeverIntended(string bug)
+    /// <summary>Gets every planted fault PARTS-INDOOR-CONFORMANCE is expected to catch (the parts variant indoors).</summary>
+    public static TheoryData<string> PartsFaults => new(PlantedFaults.All.Where(f => f.CaughtBy.Contains(PartsIndoorInvariants.Conformance.Id)).Select(f => f.Id));
+
+    [Theory(DisplayName = "INTENDED-PROVED: a port bug that only reorders or only adds cells is never called intended (find_cell and the parts list indoors)")]
+    [InlineData("reorder", "FIND-CELL-CONFORMANCE")]
+    [InlineData("add", "FIND-CELL-CONFORMANCE")]
+    [InlineData("reorder", "PARTS-INDOOR-CONFORMANCE")]
+    [InlineData("add", "PARTS-INDOOR-CONFORMANCE")]
+    public void ReorderingOrAddingIsNeverIntended(string bug, string invariantId)
     {
         var port = new RewrittenAnswers(ReferenceAdapter.Instance, bug == "reorder" ? RewrittenAnswers.Reversed : RewrittenAnswers.WithExtraCell);
-        var result = ConformanceInvariants.FindCell.Run(port, Cases, PropertyRun.SeedFor("FIND-CELL-CONFORMANCE"), maxClasses: 1);
+        var invariant = ConformanceInvariants.Every.Single(i => i.Id == invariantId);
+        var result = invariant.Run(port, Cases, PropertyRun.SeedFor(invariantId), maxClasses: 1);
         Assert.Equal(ResultStatus.Failed, result.Status);
-        var intent = IntendedUnder.Explain(port, "FIND-CELL-CONFORMANCE", [.. new[] { result.Violation!.Case, result.Original?.Case }.OfType<AnyCase>().Distinct()]);
+        var intent = IntendedUnder.Explain(port, invariantId, [.. new[] { result.Violation!.Case, result.Original?.Case }.OfType<AnyCase>().Distinct()]);
         Assert.NotNull(intent);
         Assert.Null(intent.Declaration);
+        Assert.NotNull(intent.Differs);
+    }
+
+    [Theory(DisplayName = "INTENDED-PROVED: a parts fault indoors fails PARTS-INDOOR-CONFORMANCE and its finding gets the proved intended line: no declaration, what differs")]
+    [MemberData(nameof(PartsFaults))]
+    public void PartsFaultGetsTheProvedIntendedLine(string faultId)
+    {
+        var impl = PlantedFaults.Create(faultId);
+        var result = PartsIndoorInvariants.Conformance.Run(impl, Profile.Pr.CasesPerInvariant, PropertyRun.SeedFor(PartsIndoorInvariants.Conformance.Id), maxClasses: 1);
+        Assert.Equal(ResultStatus.Failed, result.Status);
+        var intent = IntendedUnder.Explain(impl, PartsIndoorInvariants.Conformance.Id, [.. new[] { result.Violation!.Case, result.Original?.Case }.OfType<AnyCase>().Distinct()]);
+        Assert.NotNull(intent); // computed: the finding is a conformance finding the declarations were tried on
+        Assert.Null(intent.Declaration);
+        Assert.NotNull(intent.Differs);
     }
 
     [Fact(DisplayName = "INTENDED-PROVED: a documented deviation served undeclared is still named (early-return-undeclared: ace-early-return)")]
@@ -77,6 +97,16 @@ public sealed class IntendedIsProvedTests
         Assert.Equal(ResultStatus.Failed, result.Status);
         var intent = IntendedUnder.Explain(impl, "FIND-CELL-CONFORMANCE", [.. new[] { result.Violation!.Case, result.Original?.Case }.OfType<AnyCase>().Distinct()]);
         Assert.Contains("ace-early-return", intent?.Declaration, StringComparison.Ordinal);
+    }
+
+    [Fact(DisplayName = "INTENDED-PROVED: a documented deviation of the parts list indoors served undeclared is named (ace-transition-filter)")]
+    public void PartsDeviationIsNamed()
+    {
+        var impl = DeclaredModes.DeclaringRetail(DeclaredModes.Declaring("ace-transition-filter", PickPolicy.Retail));
+        var result = PartsIndoorInvariants.Conformance.Run(impl, Profile.Pr.CasesPerInvariant, PropertyRun.SeedFor(PartsIndoorInvariants.Conformance.Id), maxClasses: 1);
+        Assert.Equal(ResultStatus.Failed, result.Status);
+        var intent = IntendedUnder.Explain(impl, PartsIndoorInvariants.Conformance.Id, [.. new[] { result.Violation!.Case, result.Original?.Case }.OfType<AnyCase>().Distinct()]);
+        Assert.Contains("ace-transition-filter", intent?.Declaration, StringComparison.Ordinal);
     }
 
     [Theory(DisplayName = "INTENDED-PROVED: a planted fault that is not a documented deviation, served under any declaration, still fails the gate (its catchers or a conformance invariant)")]

@@ -4,7 +4,7 @@ using AcPhys.Core;
 namespace AcPhys.Props.Support;
 
 /// <summary>
-/// A port whose find_cell answers are another's, each rewritten (a port bug that only reorders, or only adds a cell); a
+/// A port whose find_cell and parts answers are another's, each rewritten (a port bug that only reorders, or only adds a cell); a
 /// whole walk is answered by the inner port (an array that lives for the walk is kept) and rewritten answer by answer.
 /// </summary>
 /// <param name="inner">The port whose answers are rewritten.</param>
@@ -33,6 +33,9 @@ internal sealed class RewrittenAnswers(ICellPhysics inner, Func<FindCellResult, 
 
     public override FindCellResult FindCell(Scene? scene, CellId cell, IReadOnlyList<Sphere> spheres, CellId current, bool loadCells) =>
         rewrite(Inner.FindCell(scene, cell, spheres, current, loadCells));
+
+    public override FindCellResult FindCellParts(Scene scene, IReadOnlyList<Part> parts, bool loadCells) =>
+        rewrite(Inner.FindCellParts(scene, parts, loadCells));
 
     public IReadOnlyList<FindCellResult> FindCellWalk(WalkRequest walk) => [.. Inner.FindCellWalk(walk).Select(rewrite)];
 }

@@ -70,6 +70,12 @@ internal static class ConformanceInvariants
     /// <summary>Gets every conformance invariant.</summary>
     public static IReadOnlyList<Invariant> All { get; } = [LandDefs, OutsideCells, FindCellQuery, FindCell];
 
+    /// <summary>
+    /// Gets every conformance invariant of the catalogue: <see cref="All"/> and PARTS-INDOOR-CONFORMANCE, which is listed
+    /// with the parts invariants indoors (<see cref="PartsIndoorInvariants.All"/>) so that the catalogue's order stays as it was.
+    /// </summary>
+    public static IReadOnlyList<Invariant> Every { get; } = [.. All, PartsIndoorInvariants.Conformance];
+
     private static Outcome FindCellQueryCheck(ICellPhysics impl, OutdoorCase q)
     {
         var first = impl.FindCell(q.Cell, q.Origin, q.Spheres, CellId.None);

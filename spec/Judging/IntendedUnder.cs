@@ -112,6 +112,7 @@ public static class IntendedUnder
             ("FIND-CELL-CONFORMANCE", AnyCase.OutdoorWalk w) => Spread(AnyWalkDomain.Instance, new AnyWalk(w.Walk, null), seed, x => x.Indoor is { } i ? (AnyCase)i : x.Outdoor!),
             ("FIND-CELL-QUERY-CONFORMANCE" or "OUTSIDE-CELLS-CONFORMANCE", AnyCase.OutdoorQuery q) => Spread(OutdoorDomain.Instance, q.Query, seed, c => c),
             ("LANDDEFS-CONFORMANCE", AnyCase.LandQuery l) => Spread(LandDomain.Instance, l.Case, seed, c => c),
+            ("PARTS-INDOOR-CONFORMANCE", AnyCase.WalkInScene sw) => Spread(SceneDomain.Instance, sw.Walk, seed, w => w),
             _ => ([], []),
         };
     }
@@ -133,6 +134,7 @@ public static class IntendedUnder
         ("FIND-CELL-QUERY-CONFORMANCE", AnyCase.OutdoorQuery q) => ConformanceInvariants.FindCellQuery.Check(impl, q.Query),
         ("OUTSIDE-CELLS-CONFORMANCE", AnyCase.OutdoorQuery q) => ConformanceInvariants.OutsideCells.Check(impl, q.Query),
         ("LANDDEFS-CONFORMANCE", AnyCase.LandQuery l) => ConformanceInvariants.LandDefs.Check(impl, l.Case),
+        ("PARTS-INDOOR-CONFORMANCE", AnyCase.WalkInScene sw) => PartsIndoorInvariants.Conformance.Check(impl, sw.Walk),
         _ => null,
     };
 }
