@@ -31,8 +31,8 @@ public sealed class ScenePartsQueryMutationTests
     [Fact(DisplayName = "facts §7 #6: with ACE's stale array each parts call still clears the outside latch, so a second outdoor call adds its own land cells")]
     public void StaleArrayClearsTheOutsideLatch()
     {
-        var first = PartAt(LandCellAt(100, 100), 100, 100);
-        var second = PartAt(LandCellAt(150, 150), 150, 150);
+        var first = PartAt(SceneQueryMutationTests.LandCellAt(Room0, 100, 100), 100, 100);
+        var second = PartAt(SceneQueryMutationTests.LandCellAt(Room0, 150, 150), 150, 150);
         var fresh = new CellArray();
         ScenePartsQuery.FindCellList(fresh, Cottage, [second], true, Stale);
         var expected = fresh.ToIdArray();
@@ -49,7 +49,4 @@ public sealed class ScenePartsQueryMutationTests
 
     private static Part PartAt(CellId cell, float x, float y) =>
         new(cell, new Frame(new Vector3(x, y, 1), Quaternion.Identity), new Box(new Vector3(-0.2f), new Vector3(0.2f)), 0.5f, false);
-
-    private static CellId LandCellAt(float x, float y) =>
-        Room0.WithLow((ushort)((((int)(x / 24)) * 8) + (int)(y / 24) + 1));
 }

@@ -175,6 +175,6 @@ public sealed class SceneQueryMutationTests
     }
 
     // The land cell of `block`'s id whose 24 m square holds the block-frame point (x, y), by the facts' arithmetic (§1.2).
-    private static CellId LandCellAt(CellId block, float x, float y) =>
+    internal static CellId LandCellAt(CellId block, float x, float y) =>
         block.WithLow((ushort)((((int)(x / 24)) * 8) + (int)(y / 24) + 1));
 }
