@@ -26,7 +26,7 @@ root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 dll="${ACPHYS_DLL:-$root/cli/bin/Release/net10.0/acphys.dll}"
 # The documented deviations among the planted faults (docs/conformance.md, "Which declaration would make a finding
 # intended"): a port that declares them is right to behave so, so they are not in this matrix.
-deviations=" no-hysteresis sticky-pick no-hysteresis-indoor ace-hint-key early-return-undeclared ace-announced-retail "
+deviations=" no-hysteresis sticky-pick no-hysteresis-indoor ace-hint-key early-return-undeclared ace-announced-retail ace-box-side-undeclared "
 conformance="LANDDEFS-CONFORMANCE,OUTSIDE-CELLS-CONFORMANCE,FIND-CELL-QUERY-CONFORMANCE,FIND-CELL-CONFORMANCE"
 
 usage() { sed -n '2,18p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; }

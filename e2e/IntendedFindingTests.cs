@@ -28,6 +28,23 @@ public sealed class IntendedFindingTests
         Assert.DoesNotContain("capabilities:", run.Out, StringComparison.Ordinal); // every op offered, find_cell_transition included
     }
 
+    [Fact(DisplayName = "INTENDED-PROVED: ACE's box-side pairing served undeclared (serve --fault ace-box-side-undeclared) fails PARTS-INDOOR-CONFORMANCE over protocol v1, and the intended line names ace-box-side-pairing")]
+    public void AnUndeclaredBoxSidePairingIsNamed()
+    {
+        var run = Acphys.Run(["verify", "--impl-cmd", Acphys.ServeCommand + " --fault ace-box-side-undeclared", "--only", "PARTS-INDOOR-CONFORMANCE", "--cases", "300", "--timeout", "60", "--max-classes", "1"]);
+        Assert.True(run.Exit == 1, run.ToString());
+        Assert.Contains("find_cell_parts_", run.Out, StringComparison.Ordinal);
+        Assert.Contains("  intended   your answers are the reference's if you declare \"fidelity\": [\"ace-box-side-pairing\"] in hello", run.Out, StringComparison.Ordinal);
+    }
+
+    [Fact(DisplayName = "INTENDED-PROVED: the reference serving ACE's box-side pairing and declaring it (serve --fidelity ace-box-side-pairing) passes PARTS-INDOOR-CONFORMANCE over protocol v1")]
+    public void ADeclaredBoxSidePairingPasses()
+    {
+        var run = Acphys.Run(["verify", "--impl-cmd", Acphys.ServeCommand + " --fidelity ace-box-side-pairing", "--only", "PARTS-INDOOR-CONFORMANCE", "--cases", "300", "--timeout", "60"]);
+        Assert.True(run.Exit == 0, run.ToString());
+        Assert.Contains("verify: 1 invariant, 1 passed, 0 failed, 0 not tested", run.Out, StringComparison.Ordinal);
+    }
+
     [Theory(DisplayName = "INTENDED-PROVED (issue 41): a planted fault served under a declaration still fails, and its intended line names no declaration but says what differs")]
     [InlineData("close-is-outside", "ace")]
     [InlineData("snapshot-closure", "ace-keeps-stale-cells")]

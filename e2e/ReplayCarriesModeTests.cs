@@ -73,6 +73,35 @@ public sealed class ReplayCarriesModeTests
         ReplaysToExit1(line, file, env, "FIND-CELL-CONFORMANCE", ["--impl-cmd", port, "--timeout", "60"]);
     }
 
+    [Theory(DisplayName = "REPLAY-CARRIES-MODE: a parts failure found under the declared ace-box-side-pairing (facts §7 #14) replays to exit 1 from its printed line and its case file, in process and served")]
+    [InlineData(false)]
+    [InlineData(true)]
+    public void BoxSidePairingReplays(bool served)
+    {
+        const string Invariant = "PARTS-INDOOR-CONFORMANCE";
+        const string PartsFault = "parts-order-lost"; // caught by PARTS-INDOOR-CONFORMANCE alone, within a few hundred cases
+        string port = $"{Acphys.ServeCommand} --fault {PartsFault} --fidelity ace-box-side-pairing";
+        string[] options = served
+            ? ["--impl-cmd", port, "--only", Invariant, "--cases", "300", "--timeout", "60"]
+            : ["--fault", PartsFault, "--fidelity", "ace-box-side-pairing", "--only", Invariant, "--cases", "300"];
+        var (line, file, env) = Fail(options, Invariant);
+        Assert.Contains("--fidelity ace-box-side-pairing", line, StringComparison.Ordinal);
+        if (!served)
+        {
+            Assert.Equal(["ace-box-side-pairing"], CorpusJson.ReadFile(file).Mode?.Fidelity);
+        }
+
+        ReplaysToExit1(line, file, env, Invariant, served ? ["--impl-cmd", port, "--timeout", "60"] : null);
+    }
+
+    [Fact(DisplayName = "REPLAY-CARRIES-MODE: ACE's box-side pairing served undeclared (ace-box-side-undeclared) fails PARTS-INDOOR-CONFORMANCE and replays to exit 1 from its line and its file")]
+    public void BoxSideUndeclaredReplays()
+    {
+        var (line, file, env) = Fail(["--fault", "ace-box-side-undeclared", "--only", "PARTS-INDOOR-CONFORMANCE", "--cases", "300"], "PARTS-INDOOR-CONFORMANCE");
+        Assert.Contains("--fault ace-box-side-undeclared", line, StringComparison.Ordinal);
+        ReplaysToExit1(line, file, env, "PARTS-INDOOR-CONFORMANCE");
+    }
+
     // Runs a failing verify; returns its printed replay line (without the program), its case file and the environment.
     private static (string Line, string File, Dictionary<string, string> Env) Fail(string[] options, string invariant)
     {

@@ -21,6 +21,7 @@ public static class FidelityNames
         ("drop-unloaded-land-cells", f => f.DropUnloadedLandCells, f => f with { DropUnloadedLandCells = true }),
         ("reframe-transit", f => f.ReframeTransit, f => f with { ReframeTransit = true }),
         ("ace-transition-filter", f => f.AceTransitionFilters, f => f with { AceTransitionFilters = true }),
+        ("ace-box-side-pairing", f => f.AceBoxSidePairing, f => f with { AceBoxSidePairing = true }),
     ];
 
     /// <summary>The name of every ACE difference at once.</summary>

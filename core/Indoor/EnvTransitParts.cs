@@ -75,7 +75,7 @@ public static class EnvTransitParts
     /// <param name="portalId">The building portal's OtherPortalId (an index into the cell's portals; 0xFFFF = none).</param>
     /// <param name="parts">The parts.</param>
     /// <param name="fidelity">Retail or ACE.</param>
-    /// <param name="aceBoxSide">ACE's pairing of the box side with PortalSide (facts §7 #14).</param>
+    /// <param name="aceBoxSide">ACE's pairing of the box side with PortalSide (facts §7 #14), also chosen by <see cref="IndoorFidelity.AceBoxSidePairing"/>.</param>
     /// <returns>True when the cell was entered.</returns>
     public static bool CheckBuildingTransit(CellArray array, IScene scene, EnvCell cell, ushort portalId, ReadOnlySpan<Part> parts, IndoorFidelity fidelity, bool aceBoxSide = false)
     {
@@ -97,7 +97,7 @@ public static class EnvTransitParts
             var box = BoxSide.InFrame(part, cell.Id, cell.Frame);
             var side = BoxSide.Of(portal.Plane, box);
             var inside = portal.PortalSide ? Sidedness.Negative : Sidedness.Positive;
-            var accepted = aceBoxSide ? (portal.PortalSide ? Sidedness.Positive : Sidedness.Negative) : inside;
+            var accepted = aceBoxSide || fidelity.AceBoxSidePairing ? (portal.PortalSide ? Sidedness.Positive : Sidedness.Negative) : inside;
             if ((side == Sidedness.Crossing || side == accepted) && cell.Volume.BoxIntersects(box))
             {
                 array.Add(cell.Id, true);

@@ -1,8 +1,8 @@
 namespace AcPhys.Core;
 
 /// <summary>
-/// Where ACE and retail differ on the indoor paths (facts §7 #6–#13, #9 included), plus one non-retail fix a port may choose.
-/// Retail by default. The parts-variant difference #14 is a parameter of EnvTransitParts.CheckBuildingTransit only, not a declared mode.
+/// Where ACE and retail differ on the indoor paths (facts §7 #6–#14, #9 included), plus one non-retail fix a port may choose.
+/// Retail by default.
 /// </summary>
 /// <param name="AceKeepsStaleCells">#6: find_cell_list does not clear the array (entries of earlier calls survive).</param>
 /// <param name="AceEarlyReturn">#7: an interior pick returns at once, skipping the visibility filter.</param>
@@ -27,11 +27,18 @@ public readonly record struct IndoorFidelity(
     bool ReframeTransit = false,
     bool AceTransitionFilters = false)
 {
+    /// <summary>
+    /// Gets a value indicating whether the parts building entry pairs the box side as ACE does (facts §7 #14, §5.3): ACE
+    /// accepts a box wholly on the Positive side when PortalSide (retail: Negative, the cell's own side). A property, not
+    /// a positional parameter, so the shipped constructor and Deconstruct keep their shape.
+    /// </summary>
+    public bool AceBoxSidePairing { get; init; }
+
     /// <summary>Gets retail behaviour.</summary>
     public static IndoorFidelity Retail => default;
 
     /// <summary>Gets ACE's behaviour on every documented difference.</summary>
-    public static IndoorFidelity Ace => new(true, true, true, true, true, true, true, true, AceTransitionFilters: true);
+    public static IndoorFidelity Ace => new(true, true, true, true, true, true, true, true, AceTransitionFilters: true) { AceBoxSidePairing = true };
 
     /// <summary>Gets the outdoor part of this fidelity.</summary>
     public OutdoorFidelity Outdoor => new(DropUnloadedLandCells);

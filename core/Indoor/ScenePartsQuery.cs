@@ -9,8 +9,8 @@ namespace AcPhys.Core;
 /// <remarks>
 /// The closure mirrors find_cell_list (facts §4 step 4a) with the parts transit: an env cell runs
 /// <see cref="EnvTransitParts.FindTransitCells"/> (§5.2); a land cell runs the parts add_all_outside_cells (a no-op once
-/// latched, §3.5) and then, per building portal, <see cref="EnvTransitParts.CheckBuildingTransit"/> (§5.3, retail box-side
-/// pairing; ACE's §7 #14 pairing is not a declared mode). The visibility filter is the sphere variant's (§4 step 5).
+/// latched, §3.5) and then, per building portal, <see cref="EnvTransitParts.CheckBuildingTransit"/> (§5.3: retail's box-side
+/// pairing, or ACE's under <see cref="IndoorFidelity.AceBoxSidePairing"/>, §7 #14). The visibility filter is the sphere variant's (§4 step 5).
 /// </remarks>
 public static class ScenePartsQuery
 {

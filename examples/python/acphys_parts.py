@@ -8,7 +8,8 @@ r centred on its origin. The first part is the anchor and its cell is the positi
 
 Retail's choices throughout: the outdoor parts variant anchors on the first part only, folds every part's box (or, for
 Always2D, the square around its origin) into one range and adds the whole block of cells with no same-block guard
-(facts §3.4); a building door pairs the box side with PortalSide as retail does, not ACE (facts §5.3, §7 #14).
+(facts §3.4); a building door pairs the box side with PortalSide as retail does, not ACE (facts §5.3, §7 #14; a port
+that pairs as ACE does declares "ace-box-side-pairing").
 
 Arithmetic follows acphys_indoor.py: float32 inputs, points moved between frames rounded to float32, rotations and
 plane distances in double. HitsInteriorCell is not reported, as in the sphere variant (its invariants then compare

@@ -139,13 +139,13 @@ public sealed class IndoorMutationTests
             return (BoxSide.Of(plane, box) == expected).Collect(expected).Classify(closeCorner, "a corner within EPS");
         });
 
-    [Fact(DisplayName = "facts §7 #6–#13, #9: IndoorFidelity.Ace switches on every documented ACE difference and nothing that is not ACE's (ReframeTransit)")]
+    [Fact(DisplayName = "facts §7 #6–#14, #9: IndoorFidelity.Ace switches on every documented ACE difference and nothing that is not ACE's (ReframeTransit)")]
     public void IndoorFidelity_AcePreset()
     {
         var ace = IndoorFidelity.Ace;
         Assert.Equal(
-            [true, true, true, true, true, true, true, true, false, true],
-            [ace.AceKeepsStaleCells, ace.AceEarlyReturn, ace.AceFilterOutsideGuard, ace.AceNeighbourViaVisibleCells, ace.AceLoadHintLowKey, ace.AceOutsideByCellId, ace.AceNoPortalGuard, ace.DropUnloadedLandCells, ace.ReframeTransit, ace.AceTransitionFilters]);
+            [true, true, true, true, true, true, true, true, false, true, true],
+            [ace.AceKeepsStaleCells, ace.AceEarlyReturn, ace.AceFilterOutsideGuard, ace.AceNeighbourViaVisibleCells, ace.AceLoadHintLowKey, ace.AceOutsideByCellId, ace.AceNoPortalGuard, ace.DropUnloadedLandCells, ace.ReframeTransit, ace.AceTransitionFilters, ace.AceBoxSidePairing]);
         Assert.True(ace.Outdoor.DropUnloadedCells);
         Assert.Equal(default, IndoorFidelity.Retail);
     }

@@ -42,7 +42,7 @@ public sealed class PartsTransitProperties
             {
                 var portal = c.Cell.Portals[portalId];
                 var own = portal.PortalSide ? Sidedness.Negative : Sidedness.Positive;
-                var accepted = aceBoxSide ? Other(own) : own;
+                var accepted = aceBoxSide || c.Fidelity.AceBoxSidePairing ? Other(own) : own; // the parameter or the declared switch (§7 #14)
                 enters = parts.Any(p =>
                 {
                     float d = portal.Plane.Distance(LocalCentre(c.Cell, p));
@@ -68,8 +68,8 @@ public sealed class PartsTransitProperties
         from cottage in CottageProbe.Cottages
         from parts in Gen.Choose(1, 3).SelectMany(n => PartGen(cottage.Cell).ArrayOf(n))
         from portalIndex in Gen.Choose(0, 7)
-        from flags in Gen.Choose(0, 7)
-        let fidelity = new IndoorFidelity(AceNeighbourViaVisibleCells: (flags & 1) != 0, AceLoadHintLowKey: (flags & 2) != 0, AceOutsideByCellId: (flags & 4) != 0)
+        from flags in Gen.Choose(0, 15)
+        let fidelity = new IndoorFidelity(AceNeighbourViaVisibleCells: (flags & 1) != 0, AceLoadHintLowKey: (flags & 2) != 0, AceOutsideByCellId: (flags & 4) != 0) { AceBoxSidePairing = (flags & 8) != 0 }
         select new Case(cottage.Scene, cottage.Cell, parts, fidelity, portalIndex % cottage.Cell.Portals.Length);
 
     // A part around one of the cell's portal planes (CottageProbe.Probes: its centre at, just inside and just outside

@@ -74,7 +74,7 @@ internal static class FactsMatrix
         new("§5.2 parts, §5.8", "the part's box is taken into the cell's (and the neighbour's) frame", "route:EnterAndBack", "fault:parts-box-untransformed", "PARTS-INDOOR-SOUNDNESS"),
         new("§5.2 parts", "portal-major loops: the portals' order decides the list", "body:3-spheres", "fault:parts-order-lost", "PARTS-INDOOR-CONFORMANCE"),
         new("§5.3 parts", "the parts building check asks every part, not the anchor alone", "body:3-spheres", "fault:parts-building-anchor-only", "PARTS-BUILDING-ENTRY"),
-        new("§5.3 parts, §7 #14", "retail's box-side pairing at a building door", null, null, null, "not a declared mode: ACE's pairing is a parameter of EnvTransitParts.CheckBuildingTransit (props/Indoor/PartsTransitFacts pins both) that no FidelityNames switch declares, and it differs only for a box wholly on one side of the door plane with the part's sphere across it, which the 1 mm bands of PARTS-BUILDING-ENTRY leave alone; a port with ACE's pairing would differ under PARTS-INDOOR-CONFORMANCE (not measured)"),
+        new("§5.3 parts, §7 #14", "retail's box-side pairing at a building door", "route:Enter", "deviation:ace-box-side-pairing", "PARTS-INDOOR-CONFORMANCE"),
         new("§5.5, §7 #13", "point_in_cell refuses a cell without portals", "cell:portal-less", "deviation:ace-no-portal-guard", Walks),
         new("§5.5, §5.3", "a portal-less cell is still a candidate", "cell:portal-less", "fault:portal-guard-in-transit", Walks),
         new("§5.6", "terrain triangulation", null, null, null, "no membership effect: the two triangles' union is the closed square whichever diagonal (facts §5.5)"),

@@ -1,4 +1,5 @@
 using AcPhys.Contract;
+using AcPhys.Core;
 
 namespace AcPhys.Spec.Faults;
 
@@ -36,11 +37,21 @@ internal static class PartsIndoorFaults
         "facts §5.2: for each portal, for each part — the first part through a portal decides it and the portal order decides the list; a port that iterates the object's parts outermost (as its outdoor code does) lists the neighbours another part reaches first.",
         ["PARTS-INDOOR-CONFORMANCE"]);
 
+    /// <summary>ACE's box-side pairing at a building door while declaring retail: a documented deviation served undeclared.</summary>
+    public static readonly PlantedFault AceBoxSideUndeclared = new(
+        "ace-box-side-undeclared",
+        "the parts building entry pairs the box side as ACE does (a box wholly on the door's outer side enters, one wholly on the room's side does not) while the port declares retail",
+        "facts §5.3, §7 #14: retail's parts check_building_transit accepts a box that is Crossing or wholly on portal_side's side (Negative when PortalSide); ACE pairs Positive with PortalSide. A port translated ACE's pairing and declares retail; declaring ace-box-side-pairing (or ace) makes it intended. Seen only where a part's sphere reaches a building door while its box lies wholly on one side of the door's plane.",
+        ["PARTS-INDOOR-CONFORMANCE"]);
+
     /// <summary>Gets every fault of the parts variant indoors.</summary>
-    public static IReadOnlyList<PlantedFault> All { get; } = [FirstPartOnly, BoxUntransformed, BuildingAnchorOnly, OrderLost];
+    public static IReadOnlyList<PlantedFault> All { get; } = [FirstPartOnly, BoxUntransformed, BuildingAnchorOnly, OrderLost, AceBoxSideUndeclared];
 
     /// <summary>Returns an adapter carrying a fault of the parts variant indoors, or null for another fault.</summary>
     /// <param name="fault">The fault.</param>
     /// <returns>The adapter, or null.</returns>
-    public static ICellPhysics? Create(PlantedFault fault) => All.Contains(fault) ? new PartsFaultyPhysics(fault) : null;
+    public static ICellPhysics? Create(PlantedFault fault) =>
+        fault == AceBoxSideUndeclared ? PortShimFaults.AnnouncingRetail(new ReferenceAdapter(PickPolicy.Retail) { Indoor = IndoorFidelity.Retail with { AceBoxSidePairing = true } })
+        : All.Contains(fault) ? new PartsFaultyPhysics(fault)
+        : null;
 }

@@ -20,8 +20,8 @@ namespace AcPhys.Spec.Judging;
 /// ace-neighbour-via-visible-cells (VISIBILITY lets a portal neighbour the walked cell does not see be ACE's hint), ace-load-hint-low-key
 /// (PORTAL-TRANSIT, SCENE-SOUNDNESS and SCENE-TRANSLATION read a hint under its 16-bit key) and ace-no-portal-guard
 /// (<see cref="SceneOracle.Pickable"/>, HYSTERESIS-INDOOR); those switches, and the ones that break nothing measured
-/// (ace-filter-outside-guard, ace-outside-by-cell-id, drop-unloaded-land-cells, ace-transition-filter, reframe-transit,
-/// double), have no row.
+/// (ace-filter-outside-guard, ace-outside-by-cell-id, drop-unloaded-land-cells, ace-transition-filter, ace-box-side-pairing,
+/// reframe-transit, double), have no row.
 /// </remarks>
 public static class BrokenByDesign
 {
