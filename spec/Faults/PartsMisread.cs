@@ -1,0 +1,39 @@
+using System.Numerics;
+using AcPhys.Core;
+using AcPhys.Spec.Cases;
+
+namespace AcPhys.Spec.Faults;
+
+/// <summary>How a port with a frame fault of <see cref="PartsFrameFaults"/> reads the parts it is asked about.</summary>
+internal static class PartsMisread
+{
+    /// <summary>Returns the parts as the faulty port reads them.</summary>
+    /// <param name="parts">The parts as asked.</param>
+    /// <param name="fault">The fault.</param>
+    /// <returns>The parts read.</returns>
+    public static Part[] Read(IReadOnlyList<Part> parts, PlantedFault fault)
+    {
+        var read = new Part[parts.Count];
+        for (int k = 0; k < read.Length; k++)
+        {
+            var p = parts[k];
+            read[k] = fault.Id switch
+            {
+                "parts-rotation-inverted" => p with { Frame = p.Frame with { Rotation = Quaternion.Conjugate(p.Frame.Rotation) } },
+                "parts-yaw-only" => p with { Frame = p.Frame with { Rotation = PartShapes.Heading(p.Frame.Rotation) } },
+                "parts-box-centred" => p with { Bounds = Centred(p.Bounds) },
+                "parts-anchor-frame" => p with { Cell = parts[0].Cell },
+                _ => p,
+            };
+        }
+
+        return read;
+    }
+
+    // The same size, centred on the origin.
+    private static Box Centred(Box b)
+    {
+        var half = (b.Max - b.Min) * 0.5f;
+        return new Box(-half, half);
+    }
+}
