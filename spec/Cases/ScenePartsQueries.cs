@@ -7,7 +7,7 @@ namespace AcPhys.Spec.Cases;
 
 /// <summary>
 /// The parts queries a scene walk stands for (issue 41, the parts variant indoors): the reference walks the body as a
-/// retail client (movement transitions), and at each query each body sphere becomes a part centred on it, its radius r,
+/// retail client (movement transitions), and at each query each body sphere becomes a part whose origin is its centre, radius r,
 /// its box and rotation <see cref="PartShapes"/>'s (off-centre boxes of unequal sides, yawed, and pitched and rolled
 /// on odd steps), held in the position's cell and block frame — or, for every other non-anchor part near a block line,
 /// in a land cell of the neighbouring block (<see cref="PartFrames"/>). The scene kits, their routes (through doors,

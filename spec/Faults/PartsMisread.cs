@@ -17,14 +17,11 @@ internal static class PartsMisread
         for (int k = 0; k < read.Length; k++)
         {
             var p = parts[k];
-            read[k] = fault.Id switch
-            {
-                "parts-rotation-inverted" => p with { Frame = p.Frame with { Rotation = Quaternion.Conjugate(p.Frame.Rotation) } },
-                "parts-yaw-only" => p with { Frame = p.Frame with { Rotation = PartShapes.Heading(p.Frame.Rotation) } },
-                "parts-box-centred" => p with { Bounds = Centred(p.Bounds) },
-                "parts-anchor-frame" => p with { Cell = parts[0].Cell },
-                _ => p,
-            };
+            read[k] = fault == PartsFrameFaults.RotationInverted ? p with { Frame = p.Frame with { Rotation = Quaternion.Conjugate(p.Frame.Rotation) } }
+                : fault == PartsFrameFaults.YawOnly ? p with { Frame = p.Frame with { Rotation = PartShapes.Heading(p.Frame.Rotation) } }
+                : fault == PartsFrameFaults.BoxCentred ? p with { Bounds = Centred(p.Bounds) }
+                : fault == PartsFrameFaults.AnchorFrame ? p with { Cell = parts[0].Cell }
+                : p;
         }
 
         return read;
