@@ -1,4 +1,4 @@
-using System.Numerics;
+using System.Runtime.CompilerServices;
 using AcPhys.Contract;
 using AcPhys.Core;
 using AcPhys.Formats.Cases;
@@ -7,25 +7,46 @@ namespace AcPhys.Spec.Cases;
 
 /// <summary>
 /// The parts queries a scene walk stands for (issue 41, the parts variant indoors): the reference walks the body as a
-/// retail client (movement transitions), and at each query the body's spheres become parts in the same cell and block
-/// frame — one part per sphere, centred on it, its box a cube of half-side 0.4·r yawed by 37° per step, its radius r.
-/// The scene kits, their routes (through doors, along walls, across block lines) and the shrinker are the sphere
-/// walks'; the parts queries follow from the case alone, whatever the implementation answers.
+/// retail client (movement transitions), and at each query each body sphere becomes a part whose origin is its centre, radius r,
+/// its box and rotation <see cref="PartShapes"/>'s (off-centre boxes of unequal sides, yawed, and pitched and rolled
+/// on odd steps), held in the position's cell and block frame — or, for every other non-anchor part near a block line,
+/// in a land cell of the neighbouring block (<see cref="PartFrames"/>). The scene kits, their routes (through doors,
+/// along walls, across block lines) and the shrinker are the sphere walks'; the parts queries follow from the case
+/// alone, whatever the implementation answers.
 /// </summary>
 /// <remarks>
-/// Half-side 0.4·r keeps every corner of the box's axis-aligned hull in a yawed frame within 0.9·r of the centre
-/// (√5·0.4 &lt; 1), so a box that crosses a portal's plane passes the part's sphere gate (facts §5.2, §5.3) — the oracles
-/// still test the sphere gate themselves.
+/// Every box's hull in any cell's frame lies within 0.83·r of its part's centre (<see cref="PartShapes"/>), so a box
+/// that crosses a portal's plane passes the part's sphere gate (facts §5.2, §5.3) — the oracles still test the sphere
+/// gate themselves. The converse does not hold: a sphere may cross a door's plane while its box lies wholly on one
+/// side, where the box-side pairing decides (facts §7 #14; the class <c>parts:box-beside-door</c>).
 /// </remarks>
 internal static class ScenePartsQueries
 {
-    /// <summary>Half-side of a part's box as a fraction of its sphere's radius.</summary>
-    public const float HalfSide = 0.4f;
+    private static readonly ConditionalWeakTable<SceneWalk, IReadOnlyList<(int Index, Part[] Parts)>> Cache = [];
 
-    /// <summary>Returns the parts queries of a scene walk, one per query of the walk, in order.</summary>
+    /// <summary>Returns the parts queries of a scene walk, one per query of the walk, in order (computed once per walk).</summary>
     /// <param name="w">The scene walk.</param>
     /// <returns>The step index and its parts (the first is the anchor); steps with no sphere are left out.</returns>
-    public static IReadOnlyList<(int Index, Part[] Parts)> Of(SceneWalk w)
+    public static IReadOnlyList<(int Index, Part[] Parts)> Of(SceneWalk w) => Cache.GetValue(w, Derive);
+
+    /// <summary>Returns part <paramref name="k"/> of a step: the sphere's part, held in the position's cell or across a block line.</summary>
+    /// <param name="step">The step index.</param>
+    /// <param name="k">The sphere's index (0 = the anchor).</param>
+    /// <param name="cell">The position's cell (its block frame is the sphere's).</param>
+    /// <param name="sphere">The sphere.</param>
+    /// <returns>The part.</returns>
+    public static Part PartOf(int step, int k, CellId cell, Sphere sphere)
+    {
+        var part = new Part(cell, new Frame(sphere.Center, PartShapes.Rotation(step, k)), PartShapes.Bounds(step, k, sphere.Radius), sphere.Radius, false);
+        if (PartFrames.Across(step, k) && PartFrames.AcrossLine(cell, sphere.Center) is { } across)
+        {
+            part = part with { Cell = across.Cell, Frame = part.Frame with { Origin = across.Origin } };
+        }
+
+        return part;
+    }
+
+    private static IReadOnlyList<(int Index, Part[] Parts)> Derive(SceneWalk w)
     {
         var trace = SceneWalkRunner.Run(ReferenceAdapter.Instance, w, true);
         var queries = new List<(int, Part[])>(trace.Count);
@@ -36,22 +57,16 @@ internal static class ScenePartsQueries
                 continue;
             }
 
-            var yaw = Quaternion.CreateFromAxisAngle(Vector3.UnitZ, (s.Index * 37 % 360) * MathF.PI / 180f);
-            queries.Add((s.Index, s.Query.Spheres.Select(sp => PartOf(s.Query.Cell, sp, yaw)).ToArray()));
+            var parts = new Part[s.Query.Spheres.Count];
+            for (int k = 0; k < parts.Length; k++)
+            {
+                parts[k] = PartOf(s.Index, k, s.Query.Cell, s.Query.Spheres[k]);
+            }
+
+            queries.Add((s.Index, parts));
         }
 
         return queries;
-    }
-
-    /// <summary>Returns the part a sphere stands for.</summary>
-    /// <param name="cell">The position's cell (the part's cell: its block frame is the sphere's).</param>
-    /// <param name="sphere">The sphere.</param>
-    /// <param name="rotation">The part's rotation.</param>
-    /// <returns>The part.</returns>
-    public static Part PartOf(CellId cell, Sphere sphere, Quaternion rotation)
-    {
-        float h = HalfSide * sphere.Radius;
-        return new Part(cell, new Frame(sphere.Center, rotation), new Box(new Vector3(-h), new Vector3(h)), sphere.Radius, false);
     }
 
     /// <summary>The kind to ask an implementation in: the transition when <paramref name="preferTransition"/> and it offers it, else the kind it offers.</summary>

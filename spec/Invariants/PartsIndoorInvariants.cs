@@ -25,7 +25,7 @@ internal static class PartsIndoorInvariants
         "In a scene, every loaded env cell the parts list names, other than the anchor's own, is reached by some part's box (within 1 mm, in that cell's frame); every land cell lies in the smallest cell rectangle holding the anchor's column and every part's box (within 1 mm); none appears twice; and after static placement from an indoor anchor every loaded cell is the anchor's or one it sees.",
         "facts §3.4, §4 step 5, §5.2, §5.3, §5.9",
         Op.None,
-        SceneDomain.Instance,
+        ScenePartsDomain.Instance,
         (impl, w) => Judge(impl, w, false, Sound),
         sceneForms: Either);
 
@@ -35,7 +35,7 @@ internal static class PartsIndoorInvariants
         "In a scene, for every loaded env cell the parts list names and every portal of it that some part's box crosses by more than 1 mm on both sides with the part's centre within r − 1 mm of the plane: a loaded neighbour (retail: any loaded cell by full id) that such a part's box overlaps by more than 1 mm is listed, and an exit portal lists the land cell under the anchor (each unless static placement from an indoor anchor filters it out) — by any part, not only the first.",
         "facts §4 step 4a, §5.2, §5.4, §5.7, §7 #10, #12",
         Op.None,
-        SceneDomain.Instance,
+        ScenePartsDomain.Instance,
         (impl, w) => Judge(impl, w, true, Covered),
         sceneForms: Either);
 
@@ -45,7 +45,7 @@ internal static class PartsIndoorInvariants
         "In a scene, for every loaded land cell the parts list names whose building has a portal into a loaded env cell: when some part's box crosses that door's plane by more than 1 mm on both sides (in the env cell's frame, block offset applied), its centre is within r − 1 mm of the plane and its box overlaps the cell by more than 1 mm, the cell is listed and HitsInteriorCell (when reported) is set — by any part, not only the anchor.",
         "facts §5.3 (parts check_building_transit, retail box-side pairing), §5.8",
         Op.None,
-        SceneDomain.Instance,
+        ScenePartsDomain.Instance,
         (impl, w) => Judge(impl, w, true, Entered),
         sceneForms: Either);
 
@@ -55,7 +55,7 @@ internal static class PartsIndoorInvariants
         "In a scene, the parts list equals the retail-faithful reference's in the declared mode, in each kind offered: the same cells in the same order, the same load-hint flags and HitsInteriorCell when reported, and no containing cell.",
         "facts §3.4, §4, §5.2, §5.3 (the retail-faithful reference in the declared mode)",
         Op.None,
-        SceneDomain.Instance,
+        ScenePartsDomain.Instance,
         Conform,
         sceneForms: Either);
 
