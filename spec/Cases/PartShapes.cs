@@ -61,6 +61,15 @@ internal static class PartShapes
         return new Box(offset - half, offset + half);
     }
 
+    /// <summary>Returns a box of the same size centred on the part's origin (how a port that ignores the box's offset reads it).</summary>
+    /// <param name="b">The box.</param>
+    /// <returns>The centred box.</returns>
+    public static Box Centred(Box b)
+    {
+        var half = (b.Max - b.Min) * 0.5f;
+        return new Box(-half, half);
+    }
+
     /// <summary>Returns the rotation about z that carries the x axis to the rotated x axis's heading.</summary>
     /// <param name="q">A unit rotation.</param>
     /// <returns>Its heading as a rotation about z.</returns>

@@ -85,8 +85,7 @@ internal static class ScenePartsClasses
             tags.Add(Rotated3D);
         }
 
-        var half = (part.Bounds.Max - part.Bounds.Min) * 0.5f;
-        var centred = part with { Bounds = new Box(-half, half) };
+        var centred = part with { Bounds = PartShapes.Centred(part.Bounds) };
         if (side != BoxSide.Of(plane, BoxSide.InFrame(centred, cell.Id, cell.Frame)))
         {
             tags.Add(OffCentre);

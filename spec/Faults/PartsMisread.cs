@@ -19,18 +19,11 @@ internal static class PartsMisread
             var p = parts[k];
             read[k] = fault == PartsFrameFaults.RotationInverted ? p with { Frame = p.Frame with { Rotation = Quaternion.Conjugate(p.Frame.Rotation) } }
                 : fault == PartsFrameFaults.YawOnly ? p with { Frame = p.Frame with { Rotation = PartShapes.Heading(p.Frame.Rotation) } }
-                : fault == PartsFrameFaults.BoxCentred ? p with { Bounds = Centred(p.Bounds) }
+                : fault == PartsFrameFaults.BoxCentred ? p with { Bounds = PartShapes.Centred(p.Bounds) }
                 : fault == PartsFrameFaults.AnchorFrame ? p with { Cell = parts[0].Cell }
                 : p;
         }
 
         return read;
-    }
-
-    // The same size, centred on the origin.
-    private static Box Centred(Box b)
-    {
-        var half = (b.Max - b.Min) * 0.5f;
-        return new Box(-half, half);
     }
 }
