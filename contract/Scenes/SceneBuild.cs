@@ -15,6 +15,14 @@ public static class SceneBuild
     public static CellScene Build(Scene scene, VolumeMode mode = VolumeMode.Bsp)
     {
         var slots = Cache.GetValue(scene, _ => new CellScene[2]);
+
+        // Every query of a walk asks for its scene: the built scene is read without the lock once it exists (issue 51,
+        // the lock was a third of a scene invariant's time); only the first build of a scene and mode takes it.
+        if (Volatile.Read(ref slots[(int)mode]) is { } built)
+        {
+            return built;
+        }
+
         lock (slots)
         {
             return slots[(int)mode] ??= Create(scene, mode);
