@@ -40,6 +40,13 @@ public abstract class FuzzTarget
     public abstract Action<ReadOnlySpan<byte>> CreateTest(string? fault);
 
     /// <summary>
+    /// Builds the physics-only limit of the test (issue 51): the same inputs decoded and run through the reference's
+    /// physics once, with no invariant judged — what a test of this target cannot beat. Null for a target with no physics.
+    /// </summary>
+    /// <returns>The limit, or null.</returns>
+    public virtual Action<ReadOnlySpan<byte>>? CreatePhysicsOnly() => null;
+
+    /// <summary>
     /// Returns an input as a corpus entry without running any implementation (a physics target's decoded case), or
     /// null when the target has no stored case format: how an input that hangs a port is kept and replayed.
     /// </summary>

@@ -38,5 +38,13 @@ public sealed class LandTarget : PhysicsTarget<LandCase>
     public override Violation? Check(ICellPhysics impl, LandCase c) => InvariantCatalogue.CheckLandCase(impl, c);
 
     /// <inheritdoc/>
+    public override object Physics(LandCase c)
+    {
+        var impl = ReferenceAdapter.Instance;
+        bool inside = impl.GetOutsideLcoord(c.Cell, c.X, c.Y, out var lcoord);
+        return (inside, lcoord, impl.AdjustToOutside(c.Cell, c.X, c.Y), impl.LcoordToGid(c.Lcoord.X, c.Lcoord.Y));
+    }
+
+    /// <inheritdoc/>
     public override IEnumerable<LandCase> Shrink(LandCase c) => LandCaseShrinker.Shrink(c);
 }

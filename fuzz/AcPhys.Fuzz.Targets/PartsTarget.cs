@@ -48,5 +48,8 @@ public sealed class PartsTarget : PhysicsTarget<PartsCase>
     public override Violation? Check(ICellPhysics impl, PartsCase c) => InvariantCatalogue.CheckParts(impl, c);
 
     /// <inheritdoc/>
+    public override object Physics(PartsCase c) => ReferenceAdapter.Instance.OutsideCellsParts(c.Parts);
+
+    /// <inheritdoc/>
     public override IEnumerable<PartsCase> Shrink(PartsCase c) => PartsGens.Shrink(c);
 }

@@ -35,6 +35,14 @@ public abstract class PhysicsTarget<TCase> : FuzzTarget
     /// <returns>The first violation, or null.</returns>
     public abstract Violation? Check(ICellPhysics impl, TCase c);
 
+    /// <summary>Runs a case through the reference's physics once, judging nothing: the limit <see cref="CreatePhysicsOnly"/> times.</summary>
+    /// <param name="c">The case.</param>
+    /// <returns>The answer (returned so that nothing of the run is left out).</returns>
+    public abstract object Physics(TCase c);
+
+    /// <inheritdoc/>
+    public sealed override Action<ReadOnlySpan<byte>>? CreatePhysicsOnly() => data => GC.KeepAlive(Physics(Decode(data)));
+
     /// <summary>Returns simpler candidates (the properties' shrinker).</summary>
     /// <param name="c">The case.</param>
     /// <returns>Candidates.</returns>

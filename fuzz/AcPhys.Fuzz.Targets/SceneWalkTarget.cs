@@ -61,5 +61,10 @@ public sealed class SceneWalkTarget : PhysicsTarget<SceneWalk>
     public override Violation? Check(ICellPhysics impl, SceneWalk c) => InvariantCatalogue.CheckSceneWalk(impl, c);
 
     /// <inheritdoc/>
+    /// <inheritdoc/>
+    /// <remarks>One walk in static placement, its scene built on the first query: a judged input runs it in both kinds of query.</remarks>
+    public override object Physics(SceneWalk c) => ReferenceAdapter.Instance.FindCellWalk(WalkRunner.Request(c.Walk, c.Scene));
+
+    /// <inheritdoc/>
     public override IEnumerable<SceneWalk> Shrink(SceneWalk c) => SceneShrinker.Shrink(c);
 }

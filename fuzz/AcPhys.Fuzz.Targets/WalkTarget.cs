@@ -39,5 +39,8 @@ public sealed class WalkTarget : PhysicsTarget<Walk>
     public override Violation? Check(ICellPhysics impl, Walk c) => InvariantCatalogue.CheckWalk(impl, c);
 
     /// <inheritdoc/>
+    public override object Physics(Walk c) => ReferenceAdapter.Instance.FindCellWalk(WalkRunner.Request(c, null));
+
+    /// <inheritdoc/>
     public override IEnumerable<Walk> Shrink(Walk c) => WalkShrinker.Shrink(c);
 }

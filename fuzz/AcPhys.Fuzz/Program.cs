@@ -7,7 +7,7 @@ using SharpFuzz;
 // AcPhys.Fuzz seeds TARGET DIR          write the target's built-in seed inputs into DIR
 // AcPhys.Fuzz dict TARGET FILE          write the target's afl-fuzz dictionary (-x) into FILE (nothing when it has none)
 // AcPhys.Fuzz cmin TARGET SEEDS DIR...  add to SEEDS the inputs of DIR... that cover new tuples (afl-cmin's job)
-// AcPhys.Fuzz bench TARGET [N]          time the test alone on N random 17-byte inputs (no afl-fuzz, no pipes)
+// AcPhys.Fuzz bench TARGET [N]          time the test alone on N random 17-byte inputs (no afl-fuzz, no pipes), then the same inputs through the reference physics alone
 // AcPhys.Fuzz warmup TARGET [MS]        run the --impl-cmd warm-up for MS ms, printing the mean time of every 100 inputs
 // AcPhys.Fuzz list                      list targets
 // TARGET may also come from ACPHYS_FUZZ_TARGET; the planted fault from ACPHYS_FAULT (unset or empty: correct core);
@@ -111,6 +111,12 @@ switch (command)
             int n = rest.Count > 0 ? int.Parse(rest.Dequeue(), System.Globalization.CultureInfo.InvariantCulture) : 1_000_000;
             var (perInput, crashes) = Bench.Run(test, n);
             Console.WriteLine($"{target.Name}: {n} inputs, {perInput.TotalMicroseconds:F2} us/input, {crashes} crash(es)");
+            if (target.CreatePhysicsOnly() is { } physics)
+            {
+                // The same inputs through the reference's physics alone (issue 51): the limit the target is measured against.
+                var (limit, _) = Bench.Run(physics, n);
+                Console.WriteLine($"{target.Name}: physics only (the reference, no judging) {limit.TotalMicroseconds:F2} us/input; the target runs at {100 * limit / perInput:F1} % of that limit");
+            }
             return 0;
         }
 

@@ -25,11 +25,11 @@ public static class SceneWalkRunner
     /// <param name="loadCells">True to ask each step as a movement transition (no visibility filter, facts §6.14); the implementation must offer <see cref="Op.FindCellTransition"/>.
     /// A step's <see cref="WalkStep.LoadCells"/> says whether the filter was off: not for an implementation declaring ACE's transition filter (facts §7 #9).</param>
     /// <returns>One record for the start query and one per step.</returns>
-    public static IReadOnlyList<WalkStep> Run(ICellPhysics impl, SceneWalk sw, bool loadCells)
+    public static IReadOnlyList<WalkStep> Run(ICellPhysics impl, SceneWalk sw, bool loadCells) => SceneWalkMemo.Of(impl, sw, loadCells, () =>
     {
         var request = WalkRunner.Request(sw.Walk, sw.Scene, loadCells);
 
         // A step's LoadCells says whether the filter was off: ACE's transitions filter (facts §7 #9).
         return WalkRunner.Trace(request, impl.FindCellWalk(request), loadCells && !impl.Indoor.AceTransitionFilters);
-    }
+    });
 }

@@ -25,6 +25,8 @@ namespace AcPhys.Spec.Judging;
 /// </remarks>
 public static class BrokenByDesign
 {
+    private static readonly System.Collections.Concurrent.ConcurrentDictionary<(IndoorFidelity Indoor, OutdoorFidelity Outdoor), IReadOnlyList<string>> Declared = new();
+
     private static readonly Row[] Table =
     [
         // §7 #6, §4 step 1: ACE does not clear the array, so the walk's earlier queries' cells stay candidates (out of the
@@ -45,7 +47,8 @@ public static class BrokenByDesign
     /// <returns>The reason naming every declared switch that breaks it, or null.</returns>
     public static string? WhyNotJudged(string invariantId, IndoorFidelity indoor, OutdoorFidelity outdoor)
     {
-        var declared = FidelityNames.Names(indoor, outdoor);
+        // Asked for every invariant of every case a fuzz input or a replay judges: the names of a declaration are made once.
+        var declared = Declared.GetOrAdd((indoor, outdoor), d => FidelityNames.Names(d.Indoor, d.Outdoor));
         if (declared.Count == 0)
         {
             return null; // retail declared: every statement is judged
