@@ -74,10 +74,10 @@ public static class EnvTransitParts
     /// <param name="cell">The env cell behind the building portal.</param>
     /// <param name="portalId">The building portal's OtherPortalId (an index into the cell's portals; 0xFFFF = none).</param>
     /// <param name="parts">The parts.</param>
-    /// <param name="fidelity">Retail or ACE.</param>
-    /// <param name="aceBoxSide">ACE's pairing of the box side with PortalSide (facts §7 #14), also chosen by <see cref="IndoorFidelity.AceBoxSidePairing"/>.</param>
+    /// <param name="fidelity">Retail or ACE (<see cref="IndoorFidelity.AceBoxSidePairing"/>: ACE's box-side pairing, facts §7 #14).</param>
+    /// <param name="partsFidelity">Retail or ACE for the outdoor parts variant the entered cell's own transit may run (facts §7 #3–#4).</param>
     /// <returns>True when the cell was entered.</returns>
-    public static bool CheckBuildingTransit(CellArray array, IScene scene, EnvCell cell, ushort portalId, ReadOnlySpan<Part> parts, IndoorFidelity fidelity, bool aceBoxSide = false)
+    public static bool CheckBuildingTransit(CellArray array, IScene scene, EnvCell cell, ushort portalId, ReadOnlySpan<Part> parts, IndoorFidelity fidelity, PartsFidelity partsFidelity = default)
     {
         if (portalId == BldPortal.None || portalId >= cell.Portals.Length)
         {
@@ -97,11 +97,14 @@ public static class EnvTransitParts
             var box = BoxSide.InFrame(part, cell.Id, cell.Frame);
             var side = BoxSide.Of(portal.Plane, box);
             var inside = portal.PortalSide ? Sidedness.Negative : Sidedness.Positive;
-            var accepted = aceBoxSide || fidelity.AceBoxSidePairing ? (portal.PortalSide ? Sidedness.Positive : Sidedness.Negative) : inside;
+            var accepted = fidelity.AceBoxSidePairing ? (portal.PortalSide ? Sidedness.Positive : Sidedness.Negative) : inside;
             if ((side == Sidedness.Crossing || side == accepted) && cell.Volume.BoxIntersects(box))
             {
                 array.Add(cell.Id, true);
-                FindTransitCells(array, scene, cell, parts, fidelity);
+                // The entered room's exit runs add_all_outside_cells with the declared outdoor parts rules. Inside
+                // find_bbox_cell_list it is a no-op (the land cell latched AddedOutside before its building, §3.5);
+                // on an unlatched array it is not.
+                FindTransitCells(array, scene, cell, parts, fidelity, partsFidelity);
                 return true;
             }
         }

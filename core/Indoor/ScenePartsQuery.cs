@@ -77,7 +77,7 @@ public static class ScenePartsQuery
                     OutdoorParts.AddAllOutsideCells(array, parts, entry.Id, scene, partsFidelity);
                     if (scene.GetBuilding(entry.Id) is { } building)
                     {
-                        hits |= EnterBuilding(array, scene, entry.Id, building, parts, fidelity);
+                        hits |= EnterBuilding(array, scene, entry.Id, building, parts, fidelity, partsFidelity);
                     }
                 }
             }
@@ -93,7 +93,7 @@ public static class ScenePartsQuery
     }
 
     // BuildingObj.find_building_transit_cells, parts: each building portal's env cell (same block) checks the parts.
-    private static bool EnterBuilding(CellArray array, IScene scene, CellId landCell, Building building, ReadOnlySpan<Part> parts, IndoorFidelity fidelity)
+    private static bool EnterBuilding(CellArray array, IScene scene, CellId landCell, Building building, ReadOnlySpan<Part> parts, IndoorFidelity fidelity, PartsFidelity partsFidelity)
     {
         bool hit = false;
         var portals = building.Portals;
@@ -102,7 +102,7 @@ public static class ScenePartsQuery
             var portal = portals[i];
             if (scene.GetEnvCell(landCell.WithLow(portal.OtherCellId)) is { } env)
             {
-                hit |= EnvTransitParts.CheckBuildingTransit(array, scene, env, portal.OtherPortalId, parts, fidelity);
+                hit |= EnvTransitParts.CheckBuildingTransit(array, scene, env, portal.OtherPortalId, parts, fidelity, partsFidelity);
             }
         }
 

@@ -25,16 +25,16 @@ public sealed class PartsTransitProperties
                 .Collect(string.Join("+", kinds.Distinct().Order()));
         });
 
-    [FixedSeedProperty(0x9A75_0002, DisplayName = "facts §5.3: by parts, a building portal enters its cell iff some part passes the entering gate, its box side is Crossing or the accepted side (retail: the cell's own, ACE: the other) and the box intersects the cell; then that cell's parts transit runs")]
+    [FixedSeedProperty(0x9A75_0002, DisplayName = "facts §5.3: by parts, a building portal enters its cell iff some part passes the entering gate, its box side is Crossing or the accepted side (retail: the cell's own, ACE: the other) and the box intersects the cell; then that cell's parts transit runs, with the declared outdoor parts rules")]
     public Property CheckBuildingTransit_IsTheSetStatementOfTheFacts() =>
-        Prop.ForAll(FixedSeed.Zip(Cases, Gen.Elements(false, true), Gen.Choose(-2, 5)).ToArbitrary(), t =>
+        Prop.ForAll(FixedSeed.Zip(Cases, Gen.Elements(PartsFidelity.Retail, PartsFidelity.Ace), Gen.Choose(-2, 5)).ToArbitrary(), t =>
         {
-            var (c, aceBoxSide, pick) = t;
+            var (c, partsFidelity, pick) = t;
             ushort portalId = pick == -2 ? BldPortal.None : pick == -1 ? (ushort)c.Cell.Portals.Length : (ushort)c.PortalIndex;
             // The first part aims at the building portal's own plane (the others anywhere), so its gate edges are hit.
             var parts = c.Plans.Select((p, i) => (i == 0 ? p with { Probe = p.Probe with { Portal = c.PortalIndex } } : p).At(c.Cell)).ToArray();
             var actual = new CellArray();
-            bool entered = EnvTransitParts.CheckBuildingTransit(actual, c.Scene, c.Cell, portalId, parts, c.Fidelity, aceBoxSide);
+            bool entered = EnvTransitParts.CheckBuildingTransit(actual, c.Scene, c.Cell, portalId, parts, c.Fidelity, partsFidelity);
 
             var expected = new CellArray();
             bool enters = false;
@@ -42,7 +42,7 @@ public sealed class PartsTransitProperties
             {
                 var portal = c.Cell.Portals[portalId];
                 var own = portal.PortalSide ? Sidedness.Negative : Sidedness.Positive;
-                var accepted = aceBoxSide || c.Fidelity.AceBoxSidePairing ? Other(own) : own; // the parameter or the declared switch (§7 #14)
+                var accepted = c.Fidelity.AceBoxSidePairing ? Other(own) : own; // the declared switch (§7 #14)
                 enters = parts.Any(p =>
                 {
                     float d = portal.Plane.Distance(LocalCentre(c.Cell, p));
@@ -57,7 +57,7 @@ public sealed class PartsTransitProperties
             if (enters)
             {
                 expected.Add(c.Cell.Id, true);
-                EnvTransitParts.FindTransitCells(expected, c.Scene, c.Cell, parts, c.Fidelity);
+                EnvTransitParts.FindTransitCells(expected, c.Scene, c.Cell, parts, c.Fidelity, partsFidelity);
             }
 
             return (entered == enters && Same(actual, expected)).Label($"{Text(actual)} vs {Text(expected)}")

@@ -166,7 +166,7 @@ public sealed class PartsFrameTests(ITestOutputHelper output)
                     }
 
                     bool retail = EnvTransitParts.CheckBuildingTransit(new CellArray(), scene, cell, d.OtherPortalId, parts, IndoorFidelity.Retail);
-                    bool ace = EnvTransitParts.CheckBuildingTransit(new CellArray(), scene, cell, d.OtherPortalId, parts, IndoorFidelity.Retail, aceBoxSide: true);
+                    bool ace = EnvTransitParts.CheckBuildingTransit(new CellArray(), scene, cell, d.OtherPortalId, parts, IndoorFidelity.Retail with { AceBoxSidePairing = true });
                     if (retail != ace)
                     {
                         door = true;

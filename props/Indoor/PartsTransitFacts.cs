@@ -53,11 +53,29 @@ public sealed class PartsTransitFacts
         Assert.True(EnvTransitParts.CheckBuildingTransit(array, Scene, env, 0, [At(53, 50.3f)], IndoorFidelity.Retail));
         Assert.Contains(Room0, array.ToIdArray());
         array.Reset();
-        Assert.False(EnvTransitParts.CheckBuildingTransit(array, Scene, env, 0, [At(53, 50.3f)], IndoorFidelity.Retail, aceBoxSide: true));
+        Assert.False(EnvTransitParts.CheckBuildingTransit(array, Scene, env, 0, [At(53, 50.3f)], IndoorFidelity.Retail with { AceBoxSidePairing = true }));
         array.Reset();
-        Assert.True(EnvTransitParts.CheckBuildingTransit(array, Scene, env, 0, [At(53, 50.05f)], IndoorFidelity.Retail, aceBoxSide: true));
+        Assert.True(EnvTransitParts.CheckBuildingTransit(array, Scene, env, 0, [At(53, 50.05f)], IndoorFidelity.Retail with { AceBoxSidePairing = true }));
         array.Reset();
         Assert.False(EnvTransitParts.CheckBuildingTransit(array, Scene, env, 0xFFFF, [At(53, 50.05f)], IndoorFidelity.Retail));
         Assert.Equal(0, array.Count);
+    }
+
+    [Fact(DisplayName = "facts §5.3, §3.4, §7 #3: a room entered by parts exits with the declared outdoor parts rules: retail adds the cell across the block line, ACE's same-block guard does not")]
+    public void BuildingEntryExitsWithTheDeclaredPartsRules()
+    {
+        // The anchor straddles the cottage's door (crossing: both pairings enter); a second part, in the anchor's block
+        // frame at y = 200, stretches the add_cell_block range into 0xA9B5's row 0 (column 2: low 0x11).
+        Part[] parts = [At(53, 50.1f), At(53, 200)];
+        var across = new CellId(0xA9B50011);
+        var env = Scene.GetEnvCell(Room0)!;
+        var retail = new CellArray();
+        Assert.True(EnvTransitParts.CheckBuildingTransit(retail, Scene, env, 0, parts, IndoorFidelity.Retail, PartsFidelity.Retail));
+        Assert.Contains(across, retail.ToIdArray());
+        Assert.Contains(Owner, retail.ToIdArray());
+        var ace = new CellArray();
+        Assert.True(EnvTransitParts.CheckBuildingTransit(ace, Scene, env, 0, parts, IndoorFidelity.Retail, PartsFidelity.Ace));
+        Assert.DoesNotContain(across, ace.ToIdArray());
+        Assert.Contains(Owner, ace.ToIdArray());
     }
 }
