@@ -76,7 +76,8 @@ internal sealed class CaptureMinimiser
             int size = (frames.Length + parts - 1) / parts;
             for (int from = 0; from < frames.Length; from += size)
             {
-                var rest = frames.Take(from).Concat(frames.Skip(from + size)).ToArray();
+                int end = Math.Min(frames.Length, from + size);
+                KeptFrame[] rest = [.. frames.AsSpan(0, from), .. frames.AsSpan(end)];
                 if (rest.Length > 0 && rest.Length < frames.Length)
                 {
                     yield return rest;
@@ -86,7 +87,7 @@ internal sealed class CaptureMinimiser
 
         for (int i = 0; i < frames.Length && frames.Length > 1; i++)
         {
-            yield return [.. frames.Take(i), .. frames.Skip(i + 1)];
+            yield return [.. frames.AsSpan(0, i), .. frames.AsSpan(i + 1)];
         }
 
         var body = frames[0].Body;
