@@ -30,7 +30,7 @@ internal static class CaptureRun
         using (owned)
         using (var reader = CaptureReaders.Open(s.File, s.Format, s.Options))
         {
-            if (reader.Header.Body.Count > 0 && s.Options.Radius is not null)
+            if (s.Format == CaptureFormat.Native && reader.Header.Body.Count > 0 && s.Options.Radius is not null)
             {
                 throw new UsageException($"{s.File}: the capture names its body (# radius / # body); --radius is for a log that does not");
             }

@@ -79,20 +79,22 @@ internal sealed class OutdoorJudge : ICaptureJudge
         if (!Clear(wx, wy, hx, hy, body, judgeCells))
         {
             CornerChecks++;
+            bool cellsDiffer = false;
             for (int k = 0; k < 4; k++)
             {
                 double dx = (k & 1) == 0 ? -f.Position.HalfX : f.Position.HalfX, dy = (k & 2) == 0 ? -f.Position.HalfY : f.Position.HalfY;
                 var at = new Vector3((float)(wx + dx - ox), (float)(wy + dy - oy), position.Z);
-                var other = Ask(corner, from, at, body, query.Before);
-                if (other != containing)
+                if (Ask(corner, from, at, body, query.Before) != containing)
                 {
                     return FrameVerdict.Skip(NotJudgedReason.NearCellLine);
                 }
 
-                if (judgeCells && !Same(array, corner))
-                {
-                    return FrameVerdict.Skip(NotJudgedReason.NearSphereEdge);
-                }
+                cellsDiffer |= judgeCells && !Same(array, corner);
+            }
+
+            if (cellsDiffer)
+            {
+                return FrameVerdict.Skip(NotJudgedReason.NearSphereEdge);
             }
         }
 
