@@ -125,6 +125,11 @@ internal sealed class NativeCaptureReader : ICaptureReader
     private static bool HeaderValue(ReadOnlySpan<byte> line, ReadOnlySpan<byte> key, out ReadOnlySpan<byte> value)
     {
         value = default;
+        if (line.IsEmpty)
+        {
+            return false;
+        }
+
         var rest = line[1..].TrimStart((byte)' ');
         if (!rest.StartsWith(key))
         {
