@@ -107,7 +107,7 @@ internal static class CaptureRun
 
             if (f.Spans.Count > (s.Quiet ? 1 : SpansShown))
             {
-                Terminal.Line(string.Create(CultureInfo.InvariantCulture, $"     and {f.Spans.Count - (s.Quiet ? 1 : SpansShown):N0} more spans"));
+                Terminal.Line(string.Create(CultureInfo.InvariantCulture, $"     and {f.Spans.Count - (s.Quiet ? 1 : SpansShown):N0} more span{(f.Spans.Count - (s.Quiet ? 1 : SpansShown) == 1 ? string.Empty : "s")}"));
             }
         }
 
