@@ -45,7 +45,7 @@ internal sealed class CaptureChecker
         var report = new CaptureReport();
         var headerBody = reader.Header.Body.ToArray();
         var before = CellId.None;
-        KeptFrame? lastAgreed = null;
+        var lastAgreed = new AgreedFrame();
         DivergentSpan? open = null;
         long spanStart = 0;
         var windowFor = new HashSet<string>(StringComparer.Ordinal);
@@ -78,7 +78,7 @@ internal sealed class CaptureChecker
                 case VerdictKind.Agrees:
                     report.Judged++;
                     open = null;
-                    lastAgreed = KeptFrame.Of(query, VerdictKind.Agrees);
+                    lastAgreed.Set(query);
                     break;
                 default:
                     report.Judged++;
@@ -100,9 +100,9 @@ internal sealed class CaptureChecker
                     spanStart = report.Read;
                     if (windowFor.Add(cause))
                     {
-                        if (lastAgreed is not null)
+                        if (lastAgreed.Any)
                         {
-                            open.Window.Add(lastAgreed);
+                            open.Window.Add(lastAgreed.Keep());
                         }
 
                         open.Window.Add(first); // only the first span of a cause is minimised
