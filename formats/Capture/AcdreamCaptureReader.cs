@@ -15,12 +15,11 @@ namespace AcPhys.Formats.Capture;
 /// the next cellset line's seed; after the last cellset line it is unknown (the frame judges its candidates only). A
 /// transit line on its own is a frame whose cell changed from old to new (docs/ports.md, "Your own sessions").
 /// </remarks>
-internal sealed class AcdreamCaptureReader : ICaptureReader
+internal sealed class AcdreamCaptureReader : CaptureLineReader
 {
     private static readonly byte[] Transit = "[cell-transit]"u8.ToArray();
     private static readonly byte[] Cellset = "[cellset-build]"u8.ToArray();
 
-    private readonly CaptureLines lines;
     private readonly double originX;
     private readonly double originY;
     private readonly CellId[][] buffers = [new CellId[CaptureText.MaxCandidates], new CellId[CaptureText.MaxCandidates]];
@@ -35,37 +34,22 @@ internal sealed class AcdreamCaptureReader : ICaptureReader
     /// <param name="origin">The landblock whose south-west corner is the client's world (0, 0).</param>
     /// <param name="radius">The body's radius (<c>--radius</c>), or null: the lines name none.</param>
     public AcdreamCaptureReader(Stream stream, string source, LandblockId origin, float? radius)
+        : base(stream, source)
     {
-        lines = new CaptureLines(stream, source);
         originX = LandDefs.BlockLength * (double)(origin.Value >> 8);
         originY = LandDefs.BlockLength * (double)(origin.Value & 0xFF);
         Header = new CaptureHeader(CaptureFrameKind.World, radius is { } r ? [new BodySphere(default, r)] : []);
     }
 
     /// <inheritdoc/>
-    public string Source => lines.Source;
+    public override CaptureHeader Header { get; }
 
     /// <inheritdoc/>
-    public CaptureHeader Header { get; }
-
-    /// <inheritdoc/>
-    public long Lines => lines.Number;
-
-    /// <inheritdoc/>
-    public long Ignored { get; private set; }
-
-    /// <inheritdoc/>
-    public long Position => lines.Position;
-
-    /// <inheritdoc/>
-    public long Length => lines.Length;
-
-    /// <inheritdoc/>
-    public bool Read(out CaptureFrame frame)
+    public override bool Read(out CaptureFrame frame)
     {
         while (ready.Count == 0)
         {
-            if (!lines.Next(out var line))
+            if (!LineSource.Next(out var line))
             {
                 if (pending is { } last)
                 {
@@ -86,9 +70,9 @@ internal sealed class AcdreamCaptureReader : ICaptureReader
                 continue;
             }
 
-            if (lines.Unterminated)
+            if (LineSource.Unterminated)
             {
-                throw lines.Error(lines.Number, "truncated last line: a probe line with no line end (was the log cut off while it was written?)");
+                throw LineSource.Error(LineSource.Number, "truncated last line: a probe line with no line end (was the log cut off while it was written?)");
             }
 
             if (t >= 0)
@@ -105,16 +89,13 @@ internal sealed class AcdreamCaptureReader : ICaptureReader
         return true;
     }
 
-    /// <inheritdoc/>
-    public void Dispose() => lines.Dispose();
-
     private void OnTransit(ReadOnlySpan<byte> s)
     {
         const string Expected = "[cell-transit] 0xOLD -> 0xNEW pos=(x,y,z) reason=R";
         s = s.TrimStart((byte)' ');
         if (s.Length < 24 || !CaptureText.TryCell(s[..10], out var old) || !s[10..].StartsWith(" -> "u8) || !CaptureText.TryCell(s[14..24], out var now))
         {
-            throw lines.Error(lines.Number, $"expected {Expected}, got \"{CaptureText.Quote(s)}\"");
+            throw LineSource.Error(LineSource.Number, $"expected {Expected}, got \"{CaptureText.Quote(s)}\"");
         }
 
         var p = Point(s[24..].TrimStart((byte)' '), "pos="u8, Expected, out _);
@@ -130,7 +111,7 @@ internal sealed class AcdreamCaptureReader : ICaptureReader
             ready.Enqueue(q); // its cell after the frame is unknown: candidates only
         }
 
-        ready.Enqueue(new CaptureFrame(++ordinal, lines.Number, now, p, float.NaN) { Before = old });
+        ready.Enqueue(new CaptureFrame(++ordinal, LineSource.Number, now, p, float.NaN) { Before = old });
     }
 
     private void OnCellset(ReadOnlySpan<byte> s)
@@ -139,7 +120,7 @@ internal sealed class AcdreamCaptureReader : ICaptureReader
         s = s.TrimStart((byte)' ');
         if (!s.StartsWith("seed="u8) || s.Length < 15 || !CaptureText.TryCell(s[5..15], out var seed))
         {
-            throw lines.Error(lines.Number, $"expected {Expected}, got \"{CaptureText.Quote(s)}\"");
+            throw LineSource.Error(LineSource.Number, $"expected {Expected}, got \"{CaptureText.Quote(s)}\"");
         }
 
         var p = Point(s[15..].TrimStart((byte)' '), "sphere="u8, Expected, out var rest);
@@ -148,24 +129,24 @@ internal sealed class AcdreamCaptureReader : ICaptureReader
         if (!rest.StartsWith("count="u8) || space < 0
             || !System.Buffers.Text.Utf8Parser.TryParse(rest[6..space], out int count, out int used) || used != space - 6 || count < 0)
         {
-            throw lines.Error(lines.Number, $"count: expected count=N (an integer ≥ 0) in {Expected}, got \"{CaptureText.Quote(rest)}\"");
+            throw LineSource.Error(LineSource.Number, $"count: expected count=N (an integer ≥ 0) in {Expected}, got \"{CaptureText.Quote(rest)}\"");
         }
 
         var ids = rest[(space + 1)..].TrimEnd((byte)' ');
         if (!ids.StartsWith("ids="u8))
         {
-            throw lines.Error(lines.Number, $"ids: expected ids=0x…,0x… in {Expected}, got \"{CaptureText.Quote(ids)}\"");
+            throw LineSource.Error(LineSource.Number, $"ids: expected ids=0x…,0x… in {Expected}, got \"{CaptureText.Quote(ids)}\"");
         }
 
         var buffer = buffers[spare];
         if (CaptureText.TryCells(ids[4..], buffer, out int n) is { } problem)
         {
-            throw lines.Error(lines.Number, "ids: " + problem);
+            throw LineSource.Error(LineSource.Number, "ids: " + problem);
         }
 
         if (n != count)
         {
-            throw lines.Error(lines.Number, $"count={count} but {n} id{(n == 1 ? string.Empty : "s")} listed: expected as many ids as the count");
+            throw LineSource.Error(LineSource.Number, $"count={count} but {n} id{(n == 1 ? string.Empty : "s")} listed: expected as many ids as the count");
         }
 
         if (pending is { } q)
@@ -174,7 +155,7 @@ internal sealed class AcdreamCaptureReader : ICaptureReader
         }
 
         spare ^= 1;
-        pending = new CaptureFrame(++ordinal, lines.Number, CellId.None, p, float.NaN) { Before = seed, HasCandidates = true, Candidates = buffer.AsMemory(0, n) };
+        pending = new CaptureFrame(++ordinal, LineSource.Number, CellId.None, p, float.NaN) { Before = seed, HasCandidates = true, Candidates = buffer.AsMemory(0, n) };
     }
 
     // "name(x,y,z)" then the rest; x, y moved from the client's world frame into the map's.
@@ -183,14 +164,14 @@ internal sealed class AcdreamCaptureReader : ICaptureReader
         int close = s.IndexOf((byte)')');
         if (!s.StartsWith(name) || s.Length <= name.Length || s[name.Length] != (byte)'(' || close < 0)
         {
-            throw lines.Error(lines.Number, $"expected {expected}, got \"{CaptureText.Quote(s)}\"");
+            throw LineSource.Error(LineSource.Number, $"expected {expected}, got \"{CaptureText.Quote(s)}\"");
         }
 
         var inner = s[(name.Length + 1)..close];
         Span<Range> f = stackalloc Range[4];
         if (CaptureText.Split(inner, f, (byte)',') != 3)
         {
-            throw lines.Error(lines.Number, $"{System.Text.Encoding.ASCII.GetString(name)}: expected three coordinates (x,y,z), got \"{CaptureText.Quote(inner)}\"");
+            throw LineSource.Error(LineSource.Number, $"{System.Text.Encoding.ASCII.GetString(name)}: expected three coordinates (x,y,z), got \"{CaptureText.Quote(inner)}\"");
         }
 
         rest = s[(close + 1)..];
@@ -203,5 +184,5 @@ internal sealed class AcdreamCaptureReader : ICaptureReader
     private (double V, byte D) Coordinate(ReadOnlySpan<byte> field, string name) =>
         CaptureText.TryNumber(field, out double v, out byte d)
             ? (v, d)
-            : throw lines.Error(lines.Number, $"{name}: expected {CaptureText.NumberExpected}, got \"{CaptureText.Quote(field)}\"");
+            : throw LineSource.Error(LineSource.Number, $"{name}: expected {CaptureText.NumberExpected}, got \"{CaptureText.Quote(field)}\"");
 }

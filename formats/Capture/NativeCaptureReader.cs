@@ -7,11 +7,10 @@ namespace AcPhys.Formats.Capture;
 /// <c>frame TAB cell TAB x TAB y TAB z [TAB radius] [TAB candidates]</c>; <c>#</c> lines are comments, and before the first
 /// frame the headers <c># frame: block|world</c>, <c># radius: r</c> and <c># body: [...]</c>. Streamed: one line in memory.
 /// </summary>
-internal sealed class NativeCaptureReader : ICaptureReader
+internal sealed class NativeCaptureReader : CaptureLineReader
 {
     private const string FrameExpected = "expected a frame: frame, cell, x, y, z [, radius] [, candidates], tab-separated";
 
-    private readonly CaptureLines lines;
     private readonly CellId[] candidates = new CellId[CaptureText.MaxCandidates];
     private long lastNumber = -1;
     private bool first;
@@ -23,13 +22,13 @@ internal sealed class NativeCaptureReader : ICaptureReader
     /// <param name="source">The file name for messages.</param>
     /// <exception cref="InputFormatException">A malformed header or first frame.</exception>
     public NativeCaptureReader(Stream stream, string source)
+        : base(stream, source)
     {
-        lines = new CaptureLines(stream, source);
         var frame = CaptureFrameKind.Block;
         IReadOnlyList<AcPhys.Formats.Cases.BodySphere> body = [];
         try
         {
-            while (lines.Next(out var line))
+            while (LineSource.Next(out var line))
             {
                 if (line.IsEmpty || line[0] == (byte)'#')
                 {
@@ -38,7 +37,7 @@ internal sealed class NativeCaptureReader : ICaptureReader
                     {
                         frame = v.SequenceEqual("block"u8) ? CaptureFrameKind.Block
                             : v.SequenceEqual("world"u8) ? CaptureFrameKind.World
-                            : throw lines.Error(lines.Number, $"# frame: expected \"block\" or \"world\", got \"{CaptureText.Quote(v)}\"");
+                            : throw LineSource.Error(LineSource.Number, $"# frame: expected \"block\" or \"world\", got \"{CaptureText.Quote(v)}\"");
                     }
                     else if (HeaderValue(line, "radius"u8, out v))
                     {
@@ -62,7 +61,7 @@ internal sealed class NativeCaptureReader : ICaptureReader
         }
         catch
         {
-            lines.Dispose();
+            LineSource.Dispose();
             throw;
         }
 
@@ -70,25 +69,10 @@ internal sealed class NativeCaptureReader : ICaptureReader
     }
 
     /// <inheritdoc/>
-    public string Source => lines.Source;
+    public override CaptureHeader Header { get; }
 
     /// <inheritdoc/>
-    public CaptureHeader Header { get; }
-
-    /// <inheritdoc/>
-    public long Lines => lines.Number;
-
-    /// <inheritdoc/>
-    public long Ignored { get; private set; }
-
-    /// <inheritdoc/>
-    public long Position => lines.Position;
-
-    /// <inheritdoc/>
-    public long Length => lines.Length;
-
-    /// <inheritdoc/>
-    public bool Read(out CaptureFrame frame)
+    public override bool Read(out CaptureFrame frame)
     {
         if (first)
         {
@@ -97,14 +81,14 @@ internal sealed class NativeCaptureReader : ICaptureReader
             return true;
         }
 
-        while (lines.Next(out var line))
+        while (LineSource.Next(out var line))
         {
             if (line.IsEmpty || line[0] == (byte)'#')
             {
                 Ignored++;
                 if (HeaderValue(line, "frame"u8, out _) || HeaderValue(line, "radius"u8, out _) || HeaderValue(line, "body"u8, out _))
                 {
-                    throw lines.Error(lines.Number, "a header after the first frame (headers # frame:, # radius:, # body: come before every frame)");
+                    throw LineSource.Error(LineSource.Number, "a header after the first frame (headers # frame:, # radius:, # body: come before every frame)");
                 }
 
                 continue;
@@ -117,9 +101,6 @@ internal sealed class NativeCaptureReader : ICaptureReader
         frame = default;
         return false;
     }
-
-    /// <inheritdoc/>
-    public void Dispose() => lines.Dispose();
 
     // "# key: value" (spaces around the colon allowed).
     private static bool HeaderValue(ReadOnlySpan<byte> line, ReadOnlySpan<byte> key, out ReadOnlySpan<byte> value)
@@ -150,34 +131,34 @@ internal sealed class NativeCaptureReader : ICaptureReader
     {
         if (problem is not null)
         {
-            throw lines.Error(lines.Number, problem);
+            throw LineSource.Error(LineSource.Number, problem);
         }
     }
 
     private CaptureFrame Parse(ReadOnlySpan<byte> line)
     {
-        long at = lines.Number;
-        if (lines.Unterminated)
+        long at = LineSource.Number;
+        if (LineSource.Unterminated)
         {
-            throw lines.Error(at, "truncated last line: no line end (was the capture cut off while it was written?)");
+            throw LineSource.Error(at, "truncated last line: no line end (was the capture cut off while it was written?)");
         }
 
         Span<Range> f = stackalloc Range[8];
         int n = CaptureText.Split(line, f, (byte)'\t');
         if (n < 5 || n > 7)
         {
-            throw lines.Error(at, $"{FrameExpected}; got {n} field{(n == 1 ? string.Empty : "s")}");
+            throw LineSource.Error(at, $"{FrameExpected}; got {n} field{(n == 1 ? string.Empty : "s")}");
         }
 
         var number = line[f[0]];
         if (!System.Buffers.Text.Utf8Parser.TryParse(number, out long frame, out int used) || used != number.Length || frame < 0)
         {
-            throw lines.Error(at, $"frame: expected a frame number (an integer ≥ 0), got \"{CaptureText.Quote(number)}\"");
+            throw LineSource.Error(at, $"frame: expected a frame number (an integer ≥ 0), got \"{CaptureText.Quote(number)}\"");
         }
 
         if (frame <= lastNumber)
         {
-            throw lines.Error(at, $"frame {frame} after frame {lastNumber}: expected frame numbers that increase");
+            throw LineSource.Error(at, $"frame {frame} after frame {lastNumber}: expected frame numbers that increase");
         }
 
         lastNumber = frame;
@@ -185,12 +166,12 @@ internal sealed class NativeCaptureReader : ICaptureReader
         CellId cell = CellId.None;
         if (!(cellText.SequenceEqual("-"u8) || CaptureText.TryCell(cellText, out cell)))
         {
-            throw lines.Error(at, $"cell: expected {CaptureText.CellExpected} (or - when the port reported none), got \"{CaptureText.Quote(cellText)}\"");
+            throw LineSource.Error(at, $"cell: expected {CaptureText.CellExpected} (or - when the port reported none), got \"{CaptureText.Quote(cellText)}\"");
         }
 
         if (cell.IsNone && kind == CaptureFrameKind.Block)
         {
-            throw lines.Error(at, "cell: a block-frame position needs its cell (- and 0x00000000 are allowed only with # frame: world)");
+            throw LineSource.Error(at, "cell: a block-frame position needs its cell (- and 0x00000000 are allowed only with # frame: world)");
         }
 
         var p = new PrintedPoint(Coordinate(line[f[2]], "x", at, out byte dx), Coordinate(line[f[3]], "y", at, out byte dy), Coordinate(line[f[4]], "z", at, out byte dz), dx, dy, dz);
@@ -200,7 +181,7 @@ internal sealed class NativeCaptureReader : ICaptureReader
             double r = Coordinate(line[f[5]], "radius", at, out _);
             if (AcPhys.Formats.Values.SphereRadius.Problem((float)r) is { } bad)
             {
-                throw lines.Error(at, "radius: " + bad);
+                throw LineSource.Error(at, "radius: " + bad);
             }
 
             radius = (float)r;
@@ -213,7 +194,7 @@ internal sealed class NativeCaptureReader : ICaptureReader
             int count = 0;
             if (!list.SequenceEqual("none"u8) && CaptureText.TryCells(list, candidates, out count) is { } problem)
             {
-                throw lines.Error(at, "candidates: " + problem + " (expected ids separated by commas, \"none\" for an empty list, or -)");
+                throw LineSource.Error(at, "candidates: " + problem + " (expected ids separated by commas, \"none\" for an empty list, or -)");
             }
 
             result = result with { HasCandidates = true, Candidates = candidates.AsMemory(0, count) };
@@ -225,5 +206,5 @@ internal sealed class NativeCaptureReader : ICaptureReader
     private double Coordinate(ReadOnlySpan<byte> field, string name, long at, out byte decimals) =>
         CaptureText.TryNumber(field, out double v, out decimals)
             ? v
-            : throw lines.Error(at, $"{name}: expected {CaptureText.NumberExpected}, got \"{CaptureText.Quote(field)}\"");
+            : throw LineSource.Error(at, $"{name}: expected {CaptureText.NumberExpected}, got \"{CaptureText.Quote(field)}\"");
 }
