@@ -31,6 +31,7 @@ internal static class Program
             FuzzCommand.Create(),
             TradeoffsCommand.Create(),
             BenchCommand.Create(),
+            CaptureCommand.Create(),
         };
 
         var parse = root.Parse(args);

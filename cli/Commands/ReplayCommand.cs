@@ -78,6 +78,13 @@ internal static class ReplayCommand
             }
 
             var (impl, fault) = mode.Reference();
+            if (entry is { Walk: { } walk, Recorded: { } recorded } && fault is null)
+            {
+                // A minimised capture (capture check --minimise): the port's recorded answers are judged, not the reference's.
+                Console.Error.WriteLine("replay: judging the port's recorded answers (field \"recorded\") against " + impl.Name + "; give --impl / --impl-cmd to ask the port again");
+                return ReplayPrinter.Replay(entry, path, new ReplayTarget(new AcPhys.Spec.Capture.RecordedPhysics(walk, recorded, impl), null));
+            }
+
             return ReplayPrinter.Replay(entry, path, new ReplayTarget(impl, fault));
         }
 

@@ -35,6 +35,9 @@ public sealed record CorpusEntry
     /// <summary>Gets the walk, for kind <c>walk</c>.</summary>
     public Walk? Walk { get; init; }
 
+    /// <summary>Gets the port's recorded answers, one per query of <see cref="Walk"/> (field <c>recorded</c>, a minimised capture), or null.</summary>
+    internal IReadOnlyList<RecordedAnswer>? Recorded { get; init; }
+
     /// <summary>Gets the scene walk, for kind <c>scene-walk</c>.</summary>
     public SceneWalk? SceneWalk { get; init; }
 

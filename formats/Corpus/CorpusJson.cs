@@ -80,6 +80,10 @@ public static class CorpusJson
             else if (entry.Walk is { } walk)
             {
                 WalkJson.Write(w, walk);
+                if (entry.Recorded is { } recorded)
+                {
+                    RecordedJson.Write(w, recorded);
+                }
             }
             else
             {
@@ -160,6 +164,7 @@ public static class CorpusJson
 
             var mode = root.TryGetProperty("mode", out var m) ? ReadMode(m, source) : null;
             var header = new CorpusEntry { Title = title, Invariant = invariant, FoundBy = foundBy, Seed = seed, Mode = mode, Catches = catches };
+            Require(kind == "walk" || !root.TryGetProperty("recorded", out _), source, "$.recorded", "only a walk records a port's answers (kind \"walk\")");
             if (kind == "scene-walk")
             {
                 var scene = AcPhys.Formats.Scenes.SceneJson.Read(Prop(root, "scene", source), source, "$.scene");
@@ -183,7 +188,9 @@ public static class CorpusJson
 
             if (kind == "walk")
             {
-                return header with { Walk = WalkJson.Read(Prop(root, "walk", source), source) };
+                var walk = WalkJson.Read(Prop(root, "walk", source), source);
+                var recorded = root.TryGetProperty("recorded", out var r) ? RecordedJson.Read(r, walk.Steps.Count + 1, source) : null;
+                return header with { Walk = walk, Recorded = recorded };
             }
 
             var caseElement = Prop(root, "case", source);

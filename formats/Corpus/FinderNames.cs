@@ -18,14 +18,17 @@ public static class FinderNames
     /// <summary>Found by <c>acphys diff</c> (a divergence from the reference).</summary>
     public const string Diff = "diff";
 
+    /// <summary>Minimised from a port's own capture (<c>acphys capture check --minimise</c>).</summary>
+    public const string Capture = "capture";
+
     /// <summary>Made by the suite itself (examples, normal forms).</summary>
     public const string Spec = "spec";
 
     /// <summary>Gets every known finder.</summary>
-    public static IReadOnlyList<string> All { get; } = [Hand, Props, Fuzz, Spec, Diff, Verify];
+    public static IReadOnlyList<string> All { get; } = [Hand, Props, Fuzz, Spec, Diff, Verify, Capture];
 
     /// <summary>Gets the message for an unknown finder.</summary>
-    public static string Expected => "expected hand, props, fuzz, spec, diff or verify";
+    public static string Expected => "expected hand, props, fuzz, spec, diff, verify or capture";
 
     /// <summary>Tests whether a finder name is known.</summary>
     /// <param name="name">The name.</param>

@@ -26,7 +26,7 @@ public sealed class MalformedCorpusFiles
         { Good.Replace("\"kind\":\"land\"", "\"kind\":\"scene\"", StringComparison.Ordinal), "$.kind: expected \"land\" or \"walk\"" },
         { Good.Replace("\"kind\":\"land\"", "\"kind\":\"walk\"", StringComparison.Ordinal), "$.walk: missing" },
         { Good.Replace("\"title\":\"t\",", string.Empty, StringComparison.Ordinal), "$.title: missing" },
-        { Good.Replace("\"foundBy\":\"hand\"", "\"foundBy\":\"me\"", StringComparison.Ordinal), "$.foundBy: expected hand, props, fuzz, spec, diff or verify" },
+        { Good.Replace("\"foundBy\":\"hand\"", "\"foundBy\":\"me\"", StringComparison.Ordinal), "$.foundBy: expected hand, props, fuzz, spec, diff, verify or capture" },
         { Good.Replace("\"catches\":[]", "\"catches\":\"x\"", StringComparison.Ordinal), "$.catches: expected an array of fault ids" },
         { Good.Replace("\"catches\":[]", "\"catches\":[1]", StringComparison.Ordinal), "$.catches[0]: expected a string" },
         { Good.Replace("\"case\":{", "\"case\":[{", StringComparison.Ordinal).Replace("]}}", "]}]}", StringComparison.Ordinal), "$.case: expected an object" },
