@@ -14,10 +14,11 @@ namespace AcPhys.Spec.Capture;
 /// <see cref="AcPhys.Contract.WalkThread"/> holds a position), with that cell as current. <b>Precision</b>: the log printed
 /// each coordinate to some decimals, so the true position lies in a box of ± half a unit of the last digit per axis. The
 /// answer is a function of which side of finitely many axis-aligned lines the centres lie (24 m cell lines for the pick,
-/// facts §5.5; |centre − cell edge| = r per axis for the candidates, facts §3.2, strict); every side combination the box
-/// holds is held by one of its corners. A fast test (the distance to the nearest such line, in double, against the half
-/// unit plus <see cref="Slack"/>) clears almost every frame; only the rest pay the reference at the four corners of the
-/// box, and a frame whose corners do not all give the same answer is not judged, never a false alarm.
+/// facts §5.5; |centre − cell edge| = r per axis for the candidates, facts §3.2, strict), so it is constant on each
+/// region those lines cut the box into. A fast test (the distance to the nearest such line, in double, against the half
+/// unit plus <see cref="Slack"/>) clears almost every frame; only the rest pay the reference at one point of every region
+/// (<see cref="Samples"/>: the four corners when one line crosses an axis, more when several spheres' lines do), and a
+/// frame whose points do not all give the same answer is not judged, never a false alarm.
 /// </remarks>
 internal sealed class OutdoorJudge : ICaptureJudge
 {
@@ -33,6 +34,7 @@ internal sealed class OutdoorJudge : ICaptureJudge
     private readonly CellArray array = new();
     private readonly CellArray corner = new();
     private Sphere[] spheres = new Sphere[1];
+    private double[] xs = new double[4], ys = new double[4];
 
     /// <summary>Initializes a new instance of the <see cref="OutdoorJudge"/> class.</summary>
     /// <param name="pick">The declared pick policy.</param>
@@ -79,17 +81,21 @@ internal sealed class OutdoorJudge : ICaptureJudge
         if (!Clear(wx, wy, hx, hy, body, judgeCells))
         {
             CornerChecks++;
+            int nx = Samples(ref xs, wx, f.Position.HalfX, body, judgeCells, static o => o.X);
+            int ny = Samples(ref ys, wy, f.Position.HalfY, body, judgeCells, static o => o.Y);
             bool cellsDiffer = false;
-            for (int k = 0; k < 4; k++)
+            for (int i = 0; i < nx; i++)
             {
-                double dx = (k & 1) == 0 ? -f.Position.HalfX : f.Position.HalfX, dy = (k & 2) == 0 ? -f.Position.HalfY : f.Position.HalfY;
-                var at = new Vector3((float)(wx + dx - ox), (float)(wy + dy - oy), position.Z);
-                if (Ask(corner, from, at, body, query.Before) != containing)
+                for (int j = 0; j < ny; j++)
                 {
-                    return FrameVerdict.Skip(NotJudgedReason.NearCellLine);
-                }
+                    var at = new Vector3((float)(wx + xs[i] - ox), (float)(wy + ys[j] - oy), position.Z);
+                    if (Ask(corner, from, at, body, query.Before) != containing)
+                    {
+                        return FrameVerdict.Skip(NotJudgedReason.NearCellLine);
+                    }
 
-                cellsDiffer |= judgeCells && !Same(array, corner);
+                    cellsDiffer |= judgeCells && !Same(array, corner);
+                }
             }
 
             if (cellsDiffer)
@@ -181,6 +187,62 @@ internal sealed class OutdoorJudge : ICaptureJudge
         }
 
         return true;
+    }
+
+    // One offset per region of the precision interval [−h, +h] along one axis: its two ends and a point between each pair
+    // of neighbouring boundaries inside it (24 m lines for every sphere judged, and r and 24 − r into the cell for the
+    // candidates). The answer is constant on each region, so these points see every answer the box holds — the four
+    // corners alone miss the middle strip when two boundaries fall inside one interval (several spheres, r below the
+    // printed precision, r near 12 m).
+    internal static int Samples(ref double[] into, double v, double h, BodySphere[] body, bool judgeCells, Func<Vector3, float> axis)
+    {
+        Span<double> cuts = stackalloc double[6 * Math.Max(1, body.Length)];
+        int n = 0;
+        int spheresJudged = judgeCells ? body.Length : 1;
+        for (int i = 0; i < spheresJudged; i++)
+        {
+            double u = v + axis(body[i].Offset);
+            double line = LandDefs.CellLength * Math.Floor(u / LandDefs.CellLength);
+            n = Cut(cuts, n, u, h, line);
+            n = Cut(cuts, n, u, h, line + LandDefs.CellLength);
+            if (judgeCells)
+            {
+                float r = body[i].Radius;
+                foreach (double edge in (ReadOnlySpan<double>)[line, line + LandDefs.CellLength])
+                {
+                    n = Cut(cuts, n, u, h, edge - r);
+                    n = Cut(cuts, n, u, h, edge + r);
+                }
+            }
+        }
+
+        cuts = cuts[..n];
+        cuts.Sort();
+        int count = n + 1;
+        if (into.Length < count + 1)
+        {
+            Array.Resize(ref into, count + 1); // the caller's buffer grows once for a many-sphere body
+        }
+
+        into[0] = -h;
+        for (int k = 1; k < n; k++)
+        {
+            into[k] = (cuts[k - 1] + cuts[k]) / 2;
+        }
+
+        into[n < 1 ? 1 : n] = h;
+        return n < 1 ? 2 : n + 1;
+    }
+
+    private static int Cut(Span<double> cuts, int n, double u, double h, double boundary)
+    {
+        double d = boundary - u;
+        if (d > -h && d < h && n < cuts.Length)
+        {
+            cuts[n++] = d;
+        }
+
+        return n;
     }
 
     private CellId Ask(CellArray into, CellId from, Vector3 position, BodySphere[] body, CellId current)
