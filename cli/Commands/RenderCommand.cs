@@ -43,6 +43,15 @@ internal static class RenderCommand
             impl = PlantedFaults.Create(fault.Id);
         }
 
+        // A minimised capture (field "recorded"): the port's recorded answers are drawn and judged, as replay judges
+        // them, with the reference's own answer beside each step where it differs.
+        CaseRun? reference = null;
+        if (entry is { Walk: { } recordedWalk, Recorded: { } recorded } && faultId is null)
+        {
+            reference = CaseRun.Of(impl, entry.Item);
+            impl = new AcPhys.Spec.Capture.RecordedPhysics(recordedWalk, recorded, impl);
+        }
+
         // Judged as replay judges it (Judges): the picture names what replay reports.
         var run = CaseRun.Of(impl, entry.Item);
         string caption = $"{entry.Title} — {impl.Name}";
@@ -54,7 +63,7 @@ internal static class RenderCommand
         }
         else if (entry.Item is AnyCase.OutdoorWalk w && run.Trace.Count > 0)
         {
-            OutputPath.Write(output, WalkSvg.Render(w.Walk, run, caption, entry.Invariant));
+            OutputPath.Write(output, WalkSvg.Render(w.Walk, run, caption, entry.Invariant, reference));
             drawn = $"{run.Trace.Count - 1} steps";
         }
         else

@@ -25,8 +25,9 @@ internal static class WalkSvg
     /// <param name="check">Its trace and violations.</param>
     /// <param name="title">A caption (wrapped, never cut).</param>
     /// <param name="fileInvariant">The invariant the file says found the walk, or null; named in the header when this run does not break it.</param>
+    /// <param name="reference">For a walk of recorded answers (a minimised capture): the reference's run, whose containing cell is drawn (dashed green) at every step where it differs from the recorded one; else null.</param>
     /// <returns>The SVG text.</returns>
-    public static string Render(Walk walk, CaseRun check, string title, string? fileInvariant = null)
+    public static string Render(Walk walk, CaseRun check, string title, string? fileInvariant = null, CaseRun? reference = null)
     {
         var o = walk.Body.Count > 0 ? walk.Body[0].Offset : default;
         var points = check.Trace.Select(s => (X: s.WorldX + o.X, Y: s.WorldY + o.Y)).ToList();
@@ -53,7 +54,8 @@ internal static class WalkSvg
         int? bad = check.FirstViolatingStep;
         var titleLines = SvgText.Wrap(title, chars);
         var headlineLines = SvgText.Wrap(WalkHeadline.For(check.Trace.Count - 1, check.PerStep, fileInvariant), chars);
-        var keyLines = SvgText.Wrap("green: containing cell per step; red outline: the violating step's containing cell; dashed: the cell under its centre", chars);
+        string key = "green: containing cell per step; red outline: the violating step's containing cell; dashed: the cell under its centre";
+        var keyLines = SvgText.Wrap(reference is null ? key : key.Replace("green: containing", "green: the port's recorded containing", StringComparison.Ordinal) + "; dashed green: the reference's cell where it differs", chars);
         double header = ((titleLines.Count + headlineLines.Count + keyLines.Count) * HeaderLine) + 6;
 
         var sb = new StringBuilder();
@@ -77,6 +79,15 @@ internal static class WalkSvg
                 var (gx, gy) = Oracle.LcoordOf(step.Containing);
                 bool isBad = step.Index == bad;
                 sb.Append($"<rect x=\"{F(Px(24.0 * gx))}\" y=\"{F(Py(24.0 * (gy + 1)))}\" width=\"{F(24 * scale)}\" height=\"{F(24 * scale)}\" fill=\"#bfe0bf\" fill-opacity=\"0.45\" stroke=\"{(isBad ? "red" : "none")}\" stroke-width=\"3\"/>\n");
+            }
+        }
+
+        foreach (var step in check.Trace)
+        {
+            if (reference is not null && step.Index < reference.Trace.Count && reference.Trace[step.Index].Containing is { IsNone: false, IsLand: true } r && r != step.Containing)
+            {
+                var (gx, gy) = Oracle.LcoordOf(r);
+                sb.Append($"<rect class=\"reference-cell\" x=\"{F(Px(24.0 * gx) + 3)}\" y=\"{F(Py(24.0 * (gy + 1)) + 3)}\" width=\"{F((24 * scale) - 6)}\" height=\"{F((24 * scale) - 6)}\" fill=\"none\" stroke=\"#2e8b57\" stroke-width=\"3\" stroke-dasharray=\"2 3\"/>\n");
             }
         }
 
@@ -129,15 +140,21 @@ internal static class WalkSvg
 
         // Legend: one line per step (the first 16).
         double ly = height + LegendLine + 4;
-        sb.Append($"<text x=\"4\" y=\"{F(ly)}\" font-weight=\"bold\" xml:space=\"preserve\">step  frame       containing  current     violations</text>\n");
+        string refHead = reference is null ? string.Empty : "reference   ";
+        sb.Append($"<text x=\"4\" y=\"{F(ly)}\" font-weight=\"bold\" xml:space=\"preserve\">step  frame       containing  current     {refHead}violations</text>\n");
         foreach (var step in check.Trace.Take(16))
         {
             ly += LegendLine;
-            string line = $"{step.Index,4}  {step.Frame,-10}  {step.Containing,-10}  {step.Current,-10}  {string.Join(", ", check.PerStep[step.Index].Select(v => v.InvariantId).Distinct())}";
+            string line = $"{step.Index,4}  {step.Frame,-10}  {step.Containing,-10}  {step.Current,-10}  {ReferenceColumn(reference, step.Index)}{string.Join(", ", check.PerStep[step.Index].Select(v => v.InvariantId).Distinct())}";
             sb.Append($"<text x=\"4\" y=\"{F(ly)}\" xml:space=\"preserve\" fill=\"{(step.Index == bad ? "red" : "#000")}\">{SvgText.Escape(line)}</text>\n");
         }
 
         sb.Append("</svg>\n");
         return sb.ToString();
     }
+
+    // The reference's containing cell at a step of a recorded walk ("same" where it agrees), or nothing for a plain walk.
+    private static string ReferenceColumn(CaseRun? reference, int index) => reference is null ? string.Empty
+        : index >= reference.Trace.Count ? $"{"-",-10}  "
+        : $"{reference.Trace[index].Containing.ToString(),-10}  ";
 }
