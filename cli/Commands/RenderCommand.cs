@@ -1,4 +1,6 @@
 using System.CommandLine;
+using AcPhys.Cli.Capture;
+using AcPhys.Cli.Impl;
 using AcPhys.Cli.Render;
 using AcPhys.Cli.Replay;
 using AcPhys.Contract;
@@ -18,11 +20,39 @@ internal static class RenderCommand
     /// <returns>The command.</returns>
     public static Command Create()
     {
-        var file = new Argument<string>("file") { Description = "A case file of any kind (walks and scene walks are drawn; other kinds as a card of verdicts), or a record folder holding a scene walk." };
+        var file = new Argument<string>("file") { Description = "A case file of any kind (walks and scene walks are drawn; other kinds as a card of verdicts), a record folder holding a scene walk, or a capture (a file not starting with '{', or any file with a capture option): its path checked as capture check does." };
         var output = new Option<string>("--output", "-o") { Description = "The SVG file to write (atomically), or - for stdout.", HelpName = "FILE", Required = true };
         var fault = new Option<string>("--fault") { Description = "Run the walk against the reference with this planted fault.", HelpName = "FAULT" };
-        var command = new Command("render", "Draw a stored case as SVG: a walk or a scene walk with the first violating step highlighted, any other kind as its verdicts.") { file, output, fault };
-        command.SetAction(parse => Guard.Run("render", () => Run(parse.GetValue(file) ?? string.Empty, parse.GetValue(output)!, parse.GetValue(fault))));
+        var format = new Option<string>("--format") { Description = "A capture: native (default) or acdream, as capture check.", HelpName = "native|acdream" };
+        var origin = new Option<string>("--world-origin") { Description = "A capture, --format acdream: the landblock whose south-west corner is the client's world (0, 0).", HelpName = "0xAABB" };
+        var radius = new Option<string>("--radius") { Description = "A capture that names no body: the body's radius in metres.", HelpName = "METRES" };
+        var pick = new Option<string>("--pick") { Description = "A capture: the pick policy the port declares, retail (default) or current-first.", HelpName = "POLICY" };
+        var fidelity = new Option<string>("--fidelity") { Description = "A capture: the documented deviations the port declares (comma-separated).", HelpName = "NAMES" };
+        var command = new Command("render", "Draw a stored case as SVG: a walk or a scene walk with the first violating step highlighted (a minimised capture's recorded answers beside the reference's), any other kind as its verdicts; or a capture: its path, cells and block lines, divergent spans in red with the first divergence labelled.")
+        {
+            file, output, fault, format, origin, radius, pick, fidelity,
+        };
+        command.SetAction(parse => Guard.Run("render", () =>
+        {
+            string path = parse.GetValue(file) ?? string.Empty, o = parse.GetValue(output)!;
+            string?[] capture = [parse.GetValue(format), parse.GetValue(origin), parse.GetValue(radius), parse.GetValue(pick), parse.GetValue(fidelity)];
+            if (!CaptureRender.IsCapture(path, capture.Any(c => c is not null)))
+            {
+                return Run(path, o, parse.GetValue(fault));
+            }
+
+            if (parse.GetValue(fault) is not null)
+            {
+                throw new UsageException("--fault applies to a case file; a capture is the port's own record");
+            }
+
+            OutputPath.Check("-o", o);
+            OutputPath.CheckDistinct([("-o", o)], [path]);
+            var settings = CaptureSettings.Parse(path, capture[0], capture[1], capture[2], capture[3], capture[4], ImplementationChoice.Reference, quiet: true, minimise: null);
+            var (summary, exit) = CaptureRender.Run(settings, o);
+            Said(o, summary);
+            return exit;
+        }));
         return command;
     }
 

@@ -38,9 +38,10 @@ internal sealed class CaptureChecker
     /// <summary>Checks a capture.</summary>
     /// <param name="reader">The capture.</param>
     /// <param name="progress">Called every 65,536 frames with the bytes read, or null.</param>
+    /// <param name="observe">Called with every frame's query (as judged: re-asked when a port is given) and verdict, or null (acphys render draws the path from it).</param>
     /// <returns>The report.</returns>
     /// <exception cref="AcPhys.Formats.InputFormatException">A malformed line.</exception>
-    public CaptureReport Check(ICaptureReader reader, Action<long>? progress = null)
+    public CaptureReport Check(ICaptureReader reader, Action<long>? progress = null, Action<CaptureQuery, FrameVerdict>? observe = null)
     {
         var report = new CaptureReport();
         var headerBody = reader.Header.Body.ToArray();
@@ -65,6 +66,7 @@ internal sealed class CaptureChecker
             }
 
             var verdict = Judge(query);
+            observe?.Invoke(query, verdict);
             if (!query.Frame.Cell.IsNone)
             {
                 before = query.Frame.Cell;
