@@ -151,17 +151,7 @@ internal static class CaptureSvg
             return;
         }
 
-        for (double bx = Math.Floor(minX / 192) * 192; bx < maxX; bx += 192)
-        {
-            for (double by = Math.Floor(minY / 192) * 192; by < maxY; by += 192)
-            {
-                if (bx >= 0 && by >= 0 && bx / 192 <= LandDefs.MaxBlockByte && by / 192 <= LandDefs.MaxBlockByte)
-                {
-                    var id = new LandblockId((byte)(bx / 192), (byte)(by / 192));
-                    sb.Append($"<text x=\"{SvgText.Num(Math.Max(px(bx), 0) + 3)}\" y=\"{SvgText.Num(Math.Min(py(by), height) - 4)}\" fill=\"#555\">block {id}</text>\n");
-                }
-            }
-        }
+        BlockLabels.Append(sb, minX, maxX, minY, maxY, px, py, height);
     }
 
     // One polyline per run of frames of one verdict, each starting at the run before's last point so the path is unbroken.

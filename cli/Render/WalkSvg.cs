@@ -1,6 +1,5 @@
 using System.Globalization;
 using System.Text;
-using AcPhys.Core;
 using AcPhys.Formats.Cases;
 using AcPhys.Spec.Invariants;
 using AcPhys.Spec.Judging;
@@ -111,17 +110,7 @@ internal static class WalkSvg
         }
 
         // Landblock ids at the south-west corner of every block in view.
-        for (double bx = Math.Floor(minX / 192) * 192; bx < maxX; bx += 192)
-        {
-            for (double by = Math.Floor(minY / 192) * 192; by < maxY; by += 192)
-            {
-                if (bx >= 0 && by >= 0 && bx / 192 <= LandDefs.MaxBlockByte && by / 192 <= LandDefs.MaxBlockByte)
-                {
-                    var id = new LandblockId((byte)(bx / 192), (byte)(by / 192));
-                    sb.Append($"<text x=\"{F(Math.Max(Px(bx), 0) + 3)}\" y=\"{F(Math.Min(Py(by), height) - 4)}\" fill=\"#555\">block {id}</text>\n");
-                }
-            }
-        }
+        BlockLabels.Append(sb, minX, maxX, minY, maxY, Px, Py, height);
 
         sb.Append("<polyline fill=\"none\" stroke=\"#1f5fbf\" stroke-width=\"2\" points=\"")
           .Append(string.Join(' ', points.Select(p => $"{F(Px(p.X))},{F(Py(p.Y))}"))).Append("\"/>\n");
