@@ -24,7 +24,8 @@ public sealed class CaptureRenderTests
         Assert.Contains("class=\"span\"", svg, StringComparison.Ordinal);
         Assert.Contains("class=\"span-start\"", svg, StringComparison.Ordinal);
         Assert.Contains("first divergence: frame 20", svg, StringComparison.Ordinal);
-        Assert.Contains("[cell-held-across-block-line]", svg, StringComparison.Ordinal);
+        Assert.Contains("class=\"span-label\"", svg, StringComparison.Ordinal);
+        Assert.Contains(">first divergence: frame 20; F1 [cell-held-across-block-line]</text>", svg, StringComparison.Ordinal); // the label on the map, not only the header
 
         var ok = Acphys.Run(["render", clean, "-o", Path.Combine(dir, "clean.svg")]);
         Assert.True(ok.Exit == 0, ok.ToString());

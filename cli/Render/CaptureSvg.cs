@@ -97,7 +97,7 @@ internal static class CaptureSvg
         foreach (var f in findings)
         {
             var s = f.Spans[0];
-            string label = (++n == 1 && report.FirstDivergence is long fd && f.Spans.Any(x => x.First.Number == fd) ? $"first divergence: frame {fd}; " : string.Empty) + $"F{n} [{f.Cause}]";
+            string label = (report.FirstDivergence is long fd && s.First.Number == fd ? $"first divergence: frame {fd}; " : string.Empty) + $"F{++n} [{f.Cause}]";
             sb.Append($"<text class=\"span-label\" x=\"{F(Px(s.First.WorldX) + 7)}\" y=\"{F(Py(s.First.WorldY) + 16 + (12 * ((n - 1) % 4)))}\" fill=\"{Diverge}\">{SvgText.Escape(label)}</text>\n");
         }
 
