@@ -1,3 +1,4 @@
+using AcPhys.Contract;
 using AcPhys.Props.Indoor;
 using AcPhys.Props.Support;
 using AcPhys.Spec.Faults;
@@ -18,15 +19,27 @@ public sealed class PlantedFaultsAreCaught(ITestOutputHelper output)
     public void EveryInvariantBites()
     {
         var biters = new HashSet<string>();
-        // A port's indoor faults (issue #15) add no biter the first faults lack; they are left out to keep this test fast.
-        foreach (var fault in PlantedFaults.All.Except(IndoorPortFaults.All))
+        var firstBite = new List<string>();
+        var faults = PlantedFaults.All;
+        var impls = new Dictionary<string, ICellPhysics>(StringComparer.Ordinal);
+        foreach (var invariant in InvariantCatalogue.All)
         {
-            var impl = PlantedFaults.Create(fault.Id);
-            foreach (var invariant in InvariantCatalogue.All)
+            // One real bite is all this test asks (which faults each invariant catches is the known-bug catalogue's
+            // test): the faults that declare the invariant a catcher are tried first, then every other fault, and the
+            // first failed run ends the search — the passing runs of invariants that had already bitten were most of
+            // this test's time.
+            foreach (var fault in faults.OrderBy(f => f.CaughtBy.Contains(invariant.Id) ? 0 : 1))
             {
+                if (!impls.TryGetValue(fault.Id, out var impl))
+                {
+                    impls[fault.Id] = impl = PlantedFaults.Create(fault.Id);
+                }
+
                 if (invariant.Run(impl, 2000, PropertyRun.SeedFor(invariant.Id), maxClasses: 1).Status == ResultStatus.Failed)
                 {
                     biters.Add(invariant.Id);
+                    firstBite.Add(invariant.Id + " by " + fault.Id);
+                    break;
                 }
             }
         }
@@ -41,7 +54,7 @@ public sealed class PlantedFaultsAreCaught(ITestOutputHelper output)
         }
 
         var toothless = InvariantCatalogue.All.Select(i => i.Id).Where(id => !biters.Contains(id)).ToList();
-        output.WriteLine("invariants that caught a fault: " + string.Join(", ", biters.Order()));
+        output.WriteLine("invariants that caught a fault (the first fault that bit): " + string.Join(", ", firstBite));
         Assert.Empty(toothless);
     }
 }
