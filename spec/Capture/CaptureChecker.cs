@@ -35,6 +35,16 @@ internal sealed class CaptureChecker
     public static IReadOnlyList<ICaptureJudge> OutdoorOnly(PickPolicy pick, OutdoorFidelity outdoor) =>
         [new OutdoorJudge(pick, outdoor), IndoorPlaceholderJudge.Instance];
 
+    /// <summary>Returns the judges for a declared mode over the user's dat files: frames indoors and by a building in the scene
+    /// the dats give (<see cref="SceneJudge"/>, first: it takes the outdoor frames by a building too), the rest on open land.</summary>
+    /// <param name="scenes">The dat world's scenes.</param>
+    /// <param name="pick">The declared pick.</param>
+    /// <param name="indoor">The declared indoor fidelity.</param>
+    /// <param name="outdoor">The declared outdoor fidelity.</param>
+    /// <returns>The judges.</returns>
+    public static IReadOnlyList<ICaptureJudge> WithDats(DatScenes scenes, PickPolicy pick, IndoorFidelity indoor, OutdoorFidelity outdoor) =>
+        [new SceneJudge(scenes, pick, indoor, outdoor), new OutdoorJudge(pick, outdoor), IndoorPlaceholderJudge.Instance];
+
     /// <summary>Checks a capture.</summary>
     /// <param name="reader">The capture.</param>
     /// <param name="progress">Called every 65,536 frames with the bytes read, or null.</param>
