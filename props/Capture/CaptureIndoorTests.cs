@@ -32,8 +32,8 @@ public sealed class CaptureIndoorTests(ITestOutputHelper output)
     }
 
     [Theory(DisplayName = "CAPTURE-INDOOR: a planted indoor fault's capture is divergent from the first frame its cell leaves the reference's (outdoor-wins holds the land cell on the way in, no-exit-transit the room on the way out)")]
-    [InlineData("outdoor-wins", "cell-held")]
-    [InlineData("no-exit-transit", "cell-held")]
+    [InlineData("outdoor-wins", "cell-held-outside")]
+    [InlineData("no-exit-transit", "cell-held-indoors")]
     public void PlantedIndoorFaultFoundAtTheRightFrame(string fault, string cause)
     {
         SceneCaptureWriter.Native(ReferenceAdapter.Instance, CaptureIndoorFixture.Scene, 0xA9B40031, 147.1f, 5.03f, CaptureIndoorFixture.InAndOut, out var want);
