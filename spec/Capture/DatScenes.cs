@@ -1,5 +1,6 @@
 using AcPhys.Contract;
 using AcPhys.Core;
+using AcPhys.Formats.Dat;
 using AcPhys.Formats.Dat.Container;
 
 namespace AcPhys.Spec.Capture;
@@ -23,7 +24,7 @@ internal sealed class DatScenes
 
     private readonly DatWorld world;
     private readonly Dictionary<LandblockId, BlockScene?> scenes = [];
-    private readonly Dictionary<LandblockId, bool> buildings = [];
+    private readonly Dictionary<LandblockId, HashSet<CellId>?> owners = [];
 
     /// <summary>Initializes a new instance of the <see cref="DatScenes"/> class.</summary>
     /// <param name="world">The dat world (the caller owns it).</param>
@@ -40,18 +41,23 @@ internal sealed class DatScenes
     /// <returns>True when it does.</returns>
     public bool HasBlock(LandblockId block) => world.Cell.Contains(SceneExtraction.LandblockRecordId(block));
 
-    /// <summary>Tests whether a block may hold a building (its LandblockInfo is in the cell database): an outdoor frame there may enter one.</summary>
-    /// <param name="block">The block.</param>
-    /// <returns>True when its LandblockInfo record exists.</returns>
-    public bool MayHoldBuildings(LandblockId block)
+    /// <summary>
+    /// Tests whether a land cell may own a building (facts §5.3: a building is attached to the land cell its origin
+    /// AdjustToOutside's to, in its own block): the cells its block's LandblockInfo attaches buildings to; every cell of a
+    /// block whose LandblockInfo the record reader refuses (the scene judge then says why it cannot judge there).
+    /// </summary>
+    /// <param name="landCell">A land cell.</param>
+    /// <returns>True when a building may be attached to it.</returns>
+    public bool MayOwnBuilding(CellId landCell)
     {
-        if (!buildings.TryGetValue(block, out bool has))
+        var block = landCell.Landblock;
+        if (!owners.TryGetValue(block, out var cells))
         {
-            has = block.IsOnMap && world.Cell.Contains(SceneExtraction.LandblockRecordId(block) - 1);
-            buildings[block] = has;
+            cells = Owners(block);
+            owners[block] = cells;
         }
 
-        return has;
+        return cells is null || cells.Contains(landCell);
     }
 
     /// <summary>Tests whether the cell database holds an env cell's record.</summary>
@@ -92,5 +98,25 @@ internal sealed class DatScenes
 
         scenes[block] = scene;
         return scene;
+    }
+
+    // The land cells a block's buildings are attached to (empty: no LandblockInfo, or no building); null: unreadable.
+    private HashSet<CellId>? Owners(LandblockId block)
+    {
+        uint id = SceneExtraction.LandblockRecordId(block) - 1;
+        if (!block.IsOnMap || !world.Cell.Contains(id))
+        {
+            return [];
+        }
+
+        try
+        {
+            var info = LandblockInfoRecord.Read(world.Cell.Read(id), id);
+            return [.. info.Buildings.Select(b => new Building(block, b.Origin, []).OwningCell()).Where(c => !c.IsNone)];
+        }
+        catch (AcPhys.Formats.InputFormatException)
+        {
+            return null;
+        }
     }
 }

@@ -45,9 +45,9 @@ internal sealed class SceneJudge : ICaptureJudge
     public long Taken { get; private set; }
 
     /// <inheritdoc/>
-    /// <remarks>Every indoor frame; an outdoor frame when it names a body and a sphere comes within a metre of a landblock
-    /// that may hold a building (its LandblockInfo is in the dats): there the reference enters buildings (facts §5.3), which
-    /// open land (<see cref="OutdoorJudge"/>) has none of.</remarks>
+    /// <remarks>Every indoor frame; an outdoor frame when it names a body and a sphere comes within r + 1 m of a land cell
+    /// a building of the dats is attached to: there the reference may enter the building (facts §5.3), which open land
+    /// (<see cref="OutdoorJudge"/>) has none of. Elsewhere the two agree (every block loaded in the user's world).</remarks>
     public bool Accepts(in CaptureQuery query)
     {
         if (query.IsIndoor)
@@ -62,13 +62,14 @@ internal sealed class SceneJudge : ICaptureJudge
 
         foreach (var s in query.Body)
         {
+            // The land cells a sphere can add (within r of its centre, facts §3.2), with a metre to spare.
             double cx = query.WorldX + s.Offset.X, cy = query.WorldY + s.Offset.Y, reach = s.Radius + 1.0;
-            int x0 = Block(cx - reach), x1 = Block(cx + reach), y0 = Block(cy - reach), y1 = Block(cy + reach);
+            int x0 = Cell(cx - reach), x1 = Cell(cx + reach), y0 = Cell(cy - reach), y1 = Cell(cy + reach);
             for (int x = x0; x <= x1; x++)
             {
                 for (int y = y0; y <= y1; y++)
                 {
-                    if (x is >= 0 and <= LandDefs.MaxBlockByte && y is >= 0 and <= LandDefs.MaxBlockByte && scenes.MayHoldBuildings(new LandblockId((byte)x, (byte)y)))
+                    if (LandDefs.LcoordToGid(x, y) is { IsNone: false } land && scenes.MayOwnBuilding(land))
                     {
                         return true;
                     }
@@ -170,5 +171,5 @@ internal sealed class SceneJudge : ICaptureJudge
         return FrameVerdict.Agree(after);
     }
 
-    private static int Block(double metres) => (int)Math.Floor(metres / LandDefs.BlockLength);
+    private static int Cell(double metres) => (int)Math.Max(-1, Math.Min(LandDefs.LandLength, Math.Floor(metres / LandDefs.CellLength)));
 }
