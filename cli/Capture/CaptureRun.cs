@@ -130,28 +130,48 @@ internal static class CaptureRun
         string again = s.Implementation.IsExternal ? string.Join(' ', s.Implementation.Words().Select(ReplayLine.Quote)) : "--impl-cmd 'YOUR PORT'";
         int n = 0;
         Terminal.Line();
+        var written = new Dictionary<string, string>(StringComparer.Ordinal);
         foreach (var f in r.Findings)
         {
             n++;
-            var span = f.Spans.FirstOrDefault(x => x.Window.Count > 0);
-            if (span is not null && IsIndoor(span))
-            {
-                Terminal.Line($"minimised F{n}: not written (an indoor finding: a minimised scene walk is not written yet; capture check --cell-dat/--portal-dat shows it at frame {span.First.Number})");
-                continue;
-            }
-
-            var least = span is null ? null : minimiser.Minimise(span, s.File);
-            if (least is null)
+            var spans = f.Spans.Where(x => x.Window.Count > 0).ToList();
+            if (spans.Count == 0)
             {
                 Terminal.Line($"minimised F{n}: not written (no frame of the finding records a cell a walk can replay)");
                 continue;
             }
 
-            string path = Path.Combine(s.Minimise!, $"capture-F{n}-{f.Cause}-frame{span!.First.Number}.json");
-            OutputPath.Write(path, CorpusJson.Write(least.Entry));
-            Terminal.Line($"minimised F{n}: {least.Frames} frame{(least.Frames == 1 ? string.Empty : "s")} -> {path} (its replay violates {string.Join(", ", least.Violated)})");
-            Terminal.Line($"  {program} replay {ReplayLine.Quote(path)}");
-            Terminal.Line($"  {program} replay {ReplayLine.Quote(path)} {again}");
+            foreach (var span in spans)
+            {
+                // Every kept span of the finding (the first CaptureReport.MinimisedSpans of its cause), each its own walk.
+                string label = spans.Count == 1 ? $"F{n}" : string.Create(CultureInfo.InvariantCulture, $"F{n} frame {span.First.Number}");
+                if (IsIndoor(span))
+                {
+                    Terminal.Line($"minimised {label}: not written (an indoor finding: a minimised scene walk is not written yet; capture check --cell-dat/--portal-dat shows it at frame {span.First.Number})");
+                    continue;
+                }
+
+                var least = minimiser.Minimise(span, s.File);
+                if (least is null)
+                {
+                    Terminal.Line($"minimised {label}: not written (no frame of the span records a cell a walk can replay)");
+                    continue;
+                }
+
+                string json = CorpusJson.Write(least.Entry with { Title = "-" });
+                if (written.TryGetValue(json, out string? same))
+                {
+                    Terminal.Line($"minimised {label}: the same walk as {same}");
+                    continue;
+                }
+
+                string path = Path.Combine(s.Minimise!, $"capture-F{n}-{f.Cause}-frame{span.First.Number}.json");
+                OutputPath.Write(path, CorpusJson.Write(least.Entry));
+                written[json] = path;
+                Terminal.Line($"minimised {label}: {least.Frames} frame{(least.Frames == 1 ? string.Empty : "s")} -> {path} (its replay violates {string.Join(", ", least.Violated)})");
+                Terminal.Line($"  {program} replay {ReplayLine.Quote(path)}");
+                Terminal.Line($"  {program} replay {ReplayLine.Quote(path)} {again}");
+            }
         }
 
         Terminal.Line();

@@ -59,7 +59,7 @@ internal sealed class CaptureChecker
         var lastAgreed = new AgreedFrame();
         DivergentSpan? open = null;
         long spanStart = 0;
-        var windowFor = new HashSet<string>(StringComparer.Ordinal);
+        var windows = new Dictionary<string, int>(StringComparer.Ordinal);
         while (reader.Read(out var frame))
         {
             report.Read++;
@@ -110,14 +110,16 @@ internal sealed class CaptureChecker
                     var first = KeptFrame.Of(query, VerdictKind.Diverges);
                     open = new DivergentSpan(cause, first, verdict);
                     spanStart = report.Read;
-                    if (windowFor.Add(cause))
+                    int kept = windows.GetValueOrDefault(cause);
+                    if (kept < CaptureReport.MinimisedSpans && report.Spans.Count < CaptureReport.MaxSpans)
                     {
+                        windows[cause] = kept + 1;
                         if (lastAgreed.Any)
                         {
                             open.Window.Add(lastAgreed.Keep());
                         }
 
-                        open.Window.Add(first); // only the first span of a cause is minimised
+                        open.Window.Add(first); // the first spans of a cause are minimised (CaptureReport.MinimisedSpans)
                     }
 
                     if (report.Spans.Count < CaptureReport.MaxSpans)
