@@ -1,4 +1,3 @@
-using System.Diagnostics;
 using System.Security.Cryptography;
 using AcPhys.E2E.Support;
 
@@ -93,21 +92,7 @@ public sealed class CaptureCheckTests
 
     private static string[] Words(string printed) => [.. printed.Split(' ', StringSplitOptions.RemoveEmptyEntries).Skip(1)]; // "acphys replay FILE ..." without the program
 
-    private static string Write(string dir, string name, string[] more)
-    {
-        string path = Path.Combine(dir, name);
-        var info = new ProcessStartInfo("python3") { RedirectStandardOutput = true, RedirectStandardError = true, UseShellExecute = false };
-        info.ArgumentList.Add(Path.Combine(RepoPaths.Root, "examples", "python", "acphys_capture.py"));
-        foreach (string w in Walk.Concat(more))
-        {
-            info.ArgumentList.Add(w);
-        }
-
-        var run = Acphys.RunToEnd(info, "acphys_capture.py");
-        Assert.True(run.Exit == 0, run.ToString());
-        File.WriteAllText(path, run.Out);
-        return path;
-    }
+    private static string Write(string dir, string name, string[] more) => PythonCapture.Write(dir, name, Walk.Concat(more));
 
     private static string Hash(string path) => Convert.ToHexString(SHA256.HashData(File.ReadAllBytes(path)));
 }

@@ -27,6 +27,7 @@ internal static class CaptureRun
             (port, owned) = s.Implementation.Open(line => Console.Error.WriteLine("[impl] " + line));
         }
 
+        using var world = s.Dats is { } d ? Commands.SceneFromDat.OpenWorld(d.Cell, d.Portal, "--cell-dat", "--portal-dat") : null;
         using (owned)
         using (var reader = CaptureReaders.Open(s.File, s.Format, s.Options))
         {
@@ -37,7 +38,8 @@ internal static class CaptureRun
 
             var pick = port?.Pick ?? s.Pick;
             var outdoor = port?.Outdoor ?? s.Fidelity.Outdoor;
-            var checker = new CaptureChecker(CaptureChecker.OutdoorOnly(pick, outdoor), port);
+            var scenes = world is null ? null : new DatScenes(world);
+            var checker = new CaptureChecker(scenes is null ? CaptureChecker.OutdoorOnly(pick, outdoor) : CaptureChecker.WithDats(scenes, pick, s.Fidelity.Indoor, outdoor), port);
             CaptureReport report = null!;
             long length = Math.Max(reader.Length, 1);
             ProgressBars.Run($"capture check {Path.GetFileName(s.File)}", 1000, advance =>
@@ -52,7 +54,8 @@ internal static class CaptureRun
                     }
                 });
             }, enabled: !s.Quiet);
-            Print(s, reader, report, port);
+            string? dat = world is null ? null : string.Create(CultureInfo.InvariantCulture, $"  dat world: {world.Cell.Name} ({world.Cell.Count:N0} objects), {world.Portal.Name} ({world.Portal.Count:N0} objects); {scenes!.Extracted} landblock scene{(scenes.Extracted == 1 ? string.Empty : "s")} extracted{(scenes.Refused.Count > 0 ? $", {scenes.Refused.Count} refused ({string.Join("; ", scenes.Refused.Take(3).Select(r => $"{r.Key}: {r.Value}"))})" : string.Empty)}");
+            Print(s, reader, report, port, dat);
             if (report.Spans.Count > 0 && s.Minimise is not null)
             {
                 Minimise(s, report, pick, outdoor);
@@ -75,7 +78,7 @@ internal static class CaptureRun
         }
     }
 
-    private static void Print(CaptureSettings s, ICaptureReader reader, CaptureReport r, ICellPhysics? port)
+    private static void Print(CaptureSettings s, ICaptureReader reader, CaptureReport r, ICellPhysics? port, string? dat)
     {
         var h = reader.Header;
         string body = h.Body.Count == 0 ? "no body named: the cell is judged, not the candidates"
@@ -86,6 +89,11 @@ internal static class CaptureRun
         foreach (var (reason, count) in r.NotJudged)
         {
             Terminal.Line(string.Create(CultureInfo.InvariantCulture, $"  not judged {count,10:N0}  {reason.Id}: {reason.Text}"));
+        }
+
+        if (dat is not null)
+        {
+            Terminal.Line(dat);
         }
 
         var findings = r.Findings;
@@ -122,26 +130,56 @@ internal static class CaptureRun
         string again = s.Implementation.IsExternal ? string.Join(' ', s.Implementation.Words().Select(ReplayLine.Quote)) : "--impl-cmd 'YOUR PORT'";
         int n = 0;
         Terminal.Line();
+        var written = new Dictionary<string, string>(StringComparer.Ordinal);
         foreach (var f in r.Findings)
         {
             n++;
-            var span = f.Spans.FirstOrDefault(x => x.Window.Count > 0);
-            var least = span is null ? null : minimiser.Minimise(span, s.File);
-            if (least is null)
+            var spans = f.Spans.Where(x => x.Window.Count > 0).ToList();
+            if (spans.Count == 0)
             {
                 Terminal.Line($"minimised F{n}: not written (no frame of the finding records a cell a walk can replay)");
                 continue;
             }
 
-            string path = Path.Combine(s.Minimise!, $"capture-F{n}-{f.Cause}-frame{span!.First.Number}.json");
-            OutputPath.Write(path, CorpusJson.Write(least.Entry));
-            Terminal.Line($"minimised F{n}: {least.Frames} frame{(least.Frames == 1 ? string.Empty : "s")} -> {path} (its replay violates {string.Join(", ", least.Violated)})");
-            Terminal.Line($"  {program} replay {ReplayLine.Quote(path)}");
-            Terminal.Line($"  {program} replay {ReplayLine.Quote(path)} {again}");
+            foreach (var span in spans)
+            {
+                // Every kept span of the finding (the first CaptureReport.MinimisedSpans of its cause), each its own walk.
+                string label = spans.Count == 1 ? $"F{n}" : string.Create(CultureInfo.InvariantCulture, $"F{n} frame {span.First.Number}");
+                if (IsIndoor(span))
+                {
+                    Terminal.Line($"minimised {label}: not written (an indoor finding: a minimised scene walk is not written yet; capture check --cell-dat/--portal-dat shows it at frame {span.First.Number})");
+                    continue;
+                }
+
+                var least = minimiser.Minimise(span, s.File);
+                if (least is null)
+                {
+                    Terminal.Line($"minimised {label}: not written (no frame of the span records a cell a walk can replay)");
+                    continue;
+                }
+
+                string json = CorpusJson.Write(least.Entry with { Title = "-" });
+                if (written.TryGetValue(json, out string? same))
+                {
+                    Terminal.Line($"minimised {label}: the same walk as {same}");
+                    continue;
+                }
+
+                string path = Path.Combine(s.Minimise!, $"capture-F{n}-{f.Cause}-frame{span.First.Number}.json");
+                OutputPath.Write(path, CorpusJson.Write(least.Entry));
+                written[json] = path;
+                Terminal.Line($"minimised {label}: {least.Frames} frame{(least.Frames == 1 ? string.Empty : "s")} -> {path} (its replay violates {string.Join(", ", least.Violated)})");
+                Terminal.Line($"  {program} replay {ReplayLine.Quote(path)}");
+                Terminal.Line($"  {program} replay {ReplayLine.Quote(path)} {again}");
+            }
         }
 
         Terminal.Line();
     }
+
+    // A span judged in a scene (an env cell on either side, or the reference entering a building): the minimiser walks open land.
+    private static bool IsIndoor(DivergentSpan span) =>
+        span.ReferenceCell.IsIndoorByLowWord || span.LastReference.IsIndoorByLowWord || span.Window.Any(w => w.Cell.IsIndoorByLowWord || w.Before.IsIndoorByLowWord);
 
     private static string Words(CaptureSettings s) =>
         ReferenceChoice.FidelityWords(s.Fidelity) is { Count: > 0 } w ? ", fidelity " + string.Join(',', w) : string.Empty;

@@ -17,6 +17,9 @@ namespace AcPhys.Cli.Capture;
 /// <param name="Minimise">The folder minimised walks go to, or null.</param>
 internal sealed record CaptureSettings(string File, CaptureFormat Format, CaptureOptions Options, PickPolicy Pick, (IndoorFidelity Indoor, OutdoorFidelity Outdoor) Fidelity, ImplementationChoice Implementation, bool Quiet, string? Minimise)
 {
+    /// <summary>Gets the user's dat files (<c>--cell-dat</c>, <c>--portal-dat</c>), or null: indoor frames are then not judged.</summary>
+    public (string Cell, string Portal)? Dats { get; init; }
+
     /// <summary>Validates the words given.</summary>
     /// <param name="file">FILE.</param>
     /// <param name="format">--format.</param>
@@ -27,9 +30,11 @@ internal sealed record CaptureSettings(string File, CaptureFormat Format, Captur
     /// <param name="implementation">--impl / --impl-cmd / --timeout.</param>
     /// <param name="quiet">--quiet.</param>
     /// <param name="minimise">--minimise.</param>
+    /// <param name="cellDat">--cell-dat.</param>
+    /// <param name="portalDat">--portal-dat.</param>
     /// <returns>The settings.</returns>
     /// <exception cref="UsageException">A bad option or a missing file.</exception>
-    public static CaptureSettings Parse(string file, string? format, string? origin, string? radius, string? pick, string? fidelity, ImplementationChoice implementation, bool quiet, string? minimise)
+    public static CaptureSettings Parse(string file, string? format, string? origin, string? radius, string? pick, string? fidelity, ImplementationChoice implementation, bool quiet, string? minimise, string? cellDat = null, string? portalDat = null)
     {
         if (Directory.Exists(file))
         {
@@ -94,7 +99,31 @@ internal sealed record CaptureSettings(string File, CaptureFormat Format, Captur
             OutputPath.CheckDistinct([("--minimise", minimise)], [file]);
         }
 
-        return new CaptureSettings(file, f, new CaptureOptions(block, r), policy, ReferenceChoice.ParseFidelity(fidelity), implementation, quiet, minimise);
+        (string, string)? dats = null;
+        if (cellDat is not null || portalDat is not null)
+        {
+            if (cellDat is null || portalDat is null)
+            {
+                throw new UsageException("--cell-dat and --portal-dat go together (a cell database and its portal database)");
+            }
+
+            if (implementation.IsExternal)
+            {
+                throw new UsageException("--cell-dat/--portal-dat judge the log's indoor frames; with --impl / --impl-cmd indoor frames are not re-asked yet (check the log without --impl)");
+            }
+
+            foreach (var (option, path) in new[] { ("--cell-dat", cellDat), ("--portal-dat", portalDat) })
+            {
+                if (!System.IO.File.Exists(path))
+                {
+                    throw new UsageException($"{option} {(path.Length == 0 ? "''" : path)}: no such file");
+                }
+            }
+
+            dats = (cellDat, portalDat);
+        }
+
+        return new CaptureSettings(file, f, new CaptureOptions(block, r), policy, ReferenceChoice.ParseFidelity(fidelity), implementation, quiet, minimise) { Dats = dats };
     }
 
     /// <summary>Returns the <c>--pick</c> / <c>--fidelity</c> words of the declared mode, for the stored case.</summary>

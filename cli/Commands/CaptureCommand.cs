@@ -19,10 +19,12 @@ internal static class CaptureCommand
         var fidelity = new Option<string>("--fidelity") { Description = "The documented deviations the port declares (comma-separated, as verify).", HelpName = "NAMES" };
         var quiet = new Option<bool>("--quiet", "-q") { Description = "No progress bar; only the counts, the findings and the verdict (for CI logs)." };
         var minimise = new Option<string>("--minimise") { Description = "Shrink every finding to the shortest walk that still shows it and write each as a walk case file (with the port's recorded answers) into this folder.", HelpName = "DIR" };
+        var cellDat = new Option<string>("--cell-dat") { Description = "Your cell database (client_cell_1.dat): env-cell frames and frames by a building are judged in the scene it gives (docs/ports.md, \"Your own sessions\"). Needs --portal-dat.", HelpName = "FILE" };
+        var portalDat = new Option<string>("--portal-dat") { Description = "The portal database (client_portal.dat) beside --cell-dat.", HelpName = "FILE" };
         var implOptions = new ImplementationOptions();
         var check = new Command("check", "Judge every frame of a capture against the reference in the declared mode, threading the port's cell as a walk does; report divergent spans by root cause and the first divergent frame (exit 0 agree, 1 a divergence, 2 bad input, 4 no frame judged).")
         {
-            file, format, origin, radius, pick, fidelity, quiet, minimise,
+            file, format, origin, radius, pick, fidelity, quiet, minimise, cellDat, portalDat,
         };
         foreach (var option in implOptions.All)
         {
@@ -38,7 +40,9 @@ internal static class CaptureCommand
             parse.GetValue(fidelity),
             implOptions.Read(parse),
             parse.GetValue(quiet),
-            parse.GetValue(minimise)))));
+            parse.GetValue(minimise),
+            parse.GetValue(cellDat),
+            parse.GetValue(portalDat)))));
         return new Command("capture", "Your own sessions: check a recorded capture frame by frame and minimise its findings into replayable walks.") { check };
     }
 }

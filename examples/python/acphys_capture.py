@@ -11,6 +11,16 @@ find_cell from the cell the port holds, and a containing cell re-frames the posi
 
 --format acdream writes [cellset-build] and [cell-transit] lines (world frame from --world-origin's south-west corner,
 3 decimals as acdream prints them) with unrelated log lines between them.
+
+--cottage writes an indoor capture instead: a walk in by the north door of the corpus cottage
+(corpus/seeds/cottage-a9b3-a9b4-in-and-out.json: room 1 at x 144..150, y -4..2 of 0xA9B4, its door at y = 2; room 2 at
+x 138..144), west into room 2 and back out, in steps of 0.25 m, each frame's cell the cell its centre lies in, read off
+the cottage's geometry (independent of any port: with small steps a frame's cell is the room its centre lies in). --cottage-bug holds the land cell indoors, as a port
+whose pick lets outdoor cells win. Check it with the cottage as dat files:
+
+    acphys scene to-dat corpus/seeds/cottage-a9b3-a9b4-in-and-out.json --cell cell.dat --portal portal.dat
+    python3 examples/python/acphys_capture.py --cottage > indoor.tsv
+    acphys capture check indoor.tsv --cell-dat cell.dat --portal-dat portal.dat
 """
 
 import argparse
@@ -29,20 +39,52 @@ def cell_text(cell):
     return "0x%08X" % cell
 
 
+def cottage(held):
+    """The indoor walk of --cottage: (frame, cell, x, y) in 0xA9B4's block frame."""
+    path = [(147.1, 3.1 - 0.25 * i) for i in range(10)]
+    path += [(147.1 - 0.25 * i, 0.85) for i in range(1, 25)]
+    path += [(141.1 + 0.25 * i, 0.85) for i in range(1, 25)]
+    path += [(147.1, 0.85 + 0.25 * i) for i in range(1, 10)]
+    for i, (x, y) in enumerate(path):
+        land = 0xA9B40001 + int(x // 24) * 8 + int(y // 24)
+        if 144 < x < 150 and -4 < y < 2 and not held:
+            cell = 0xA9B40100
+        elif 138 < x < 144 and -4 < y < 2 and not held:
+            cell = 0xA9B40101
+        else:
+            cell = land
+        yield i, cell, x, y
+
+
+def write_cottage(held, out):
+    out.write("# written by examples/python/acphys_capture.py --cottage%s\n" % (" --cottage-bug" if held else ""))
+    out.write("# frame: block\n")
+    out.write('# body: [{"x":0,"y":0,"z":0.6,"r":0.5},{"x":0,"y":0,"z":1.3,"r":0.5}]\n')
+    for i, cell, x, y in cottage(held):
+        out.write("%d\t%s\t%.3f\t%.3f\t%.3f\n" % (i, cell_text(cell), x, y, 0.0))
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--bug", choices=port.BUGS, help="the example port's seeded bug")
-    parser.add_argument("--start", nargs=3, metavar=("CELL", "X", "Y"), required=True, help="start cell and block-frame x, y")
+    parser.add_argument("--start", nargs=3, metavar=("CELL", "X", "Y"), help="start cell and block-frame x, y (required unless --cottage)")
     parser.add_argument("--z", type=float, default=0.0)
-    parser.add_argument("--step", nargs=2, type=float, metavar=("DX", "DY"), required=True, help="the move of every frame, metres")
-    parser.add_argument("--frames", type=int, required=True)
+    parser.add_argument("--step", nargs=2, type=float, metavar=("DX", "DY"), help="the move of every frame, metres (required unless --cottage)")
+    parser.add_argument("--frames", type=int, help="frames (required unless --cottage)")
     parser.add_argument("--radius", type=float, default=0.48)
     parser.add_argument("--decimals", type=int, default=3, help="decimals printed per coordinate")
     parser.add_argument("--format", choices=("native", "acdream"), default="native")
     parser.add_argument("--frame", choices=("block", "world"), default="block", help="native: the positions' frame")
     parser.add_argument("--candidates", action="store_true", help="native: write the radius and candidate columns")
     parser.add_argument("--world-origin", type=lambda t: int(t, 16), default=0xA9B4, help="acdream: the landblock at world (0, 0)")
+    parser.add_argument("--cottage", action="store_true", help="an indoor capture through the corpus cottage (see above)")
+    parser.add_argument("--cottage-bug", action="store_true", help="--cottage: the port holds its land cell indoors")
     args = parser.parse_args()
+    if args.cottage:
+        write_cottage(args.cottage_bug, sys.stdout)
+        return
+    if args.start is None or args.step is None or args.frames is None:
+        parser.error("--start, --step and --frames are required (or --cottage)")
     port.BUG = args.bug
 
     cell = parse_cell(args.start[0])

@@ -11,6 +11,9 @@ internal static class CaptureCauses
     {
         ["cell-held-across-block-line"] = "the port kept its cell while the centre crossed a landblock line (the #106 freeze class, facts §6.1)",
         ["cell-held"] = "the port kept its cell while the centre crossed a cell line (facts §4)",
+        ["cell-held-outside"] = "the port kept its land cell while the centre entered a building's cell (interior wins: facts §4 step 4b, §5.3)",
+        ["cell-held-indoors"] = "the port kept its env cell while the centre left it through an exit portal (facts §5.1)",
+        ["cell-held-portal"] = "the port kept its env cell while the centre crossed a portal into another env cell (facts §5.1, §5.5)",
         ["cell-other"] = "the port moved to another cell than the reference's (facts §4)",
         ["cell-none"] = "the port reported no cell where the reference has one (facts §4)",
         ["candidates-missing"] = "candidates missing from the port's list (facts §3.2, §3.3)",
@@ -30,7 +33,13 @@ internal static class CaptureCauses
             var port = q.Frame.Cell;
             if (port == q.Before && !port.IsNone)
             {
-                return v.Reference.Landblock != port.Landblock ? "cell-held-across-block-line" : "cell-held";
+                return (port.IsIndoorByLowWord, v.Reference.IsIndoorByLowWord) switch
+                {
+                    (false, true) => "cell-held-outside",
+                    (true, false) => "cell-held-indoors",
+                    (true, true) => "cell-held-portal",
+                    _ => v.Reference.Landblock != port.Landblock ? "cell-held-across-block-line" : "cell-held",
+                };
             }
 
             return port.IsNone ? "cell-none" : "cell-other";

@@ -35,6 +35,16 @@ internal sealed class CaptureChecker
     public static IReadOnlyList<ICaptureJudge> OutdoorOnly(PickPolicy pick, OutdoorFidelity outdoor) =>
         [new OutdoorJudge(pick, outdoor), IndoorPlaceholderJudge.Instance];
 
+    /// <summary>Returns the judges for a declared mode over the user's dat files: frames indoors and by a building in the scene
+    /// the dats give (<see cref="SceneJudge"/>, first: it takes the outdoor frames by a building too), the rest on open land.</summary>
+    /// <param name="scenes">The dat world's scenes.</param>
+    /// <param name="pick">The declared pick.</param>
+    /// <param name="indoor">The declared indoor fidelity.</param>
+    /// <param name="outdoor">The declared outdoor fidelity.</param>
+    /// <returns>The judges.</returns>
+    public static IReadOnlyList<ICaptureJudge> WithDats(DatScenes scenes, PickPolicy pick, IndoorFidelity indoor, OutdoorFidelity outdoor) =>
+        [new SceneJudge(scenes, pick, indoor, outdoor), new OutdoorJudge(pick, outdoor), IndoorPlaceholderJudge.Instance];
+
     /// <summary>Checks a capture.</summary>
     /// <param name="reader">The capture.</param>
     /// <param name="progress">Called every 65,536 frames with the bytes read, or null.</param>
@@ -49,7 +59,7 @@ internal sealed class CaptureChecker
         var lastAgreed = new AgreedFrame();
         DivergentSpan? open = null;
         long spanStart = 0;
-        var windowFor = new HashSet<string>(StringComparer.Ordinal);
+        var windows = new Dictionary<string, int>(StringComparer.Ordinal);
         while (reader.Read(out var frame))
         {
             report.Read++;
@@ -100,14 +110,16 @@ internal sealed class CaptureChecker
                     var first = KeptFrame.Of(query, VerdictKind.Diverges);
                     open = new DivergentSpan(cause, first, verdict);
                     spanStart = report.Read;
-                    if (windowFor.Add(cause))
+                    int kept = windows.GetValueOrDefault(cause);
+                    if (kept < CaptureReport.MinimisedSpans && report.Spans.Count < CaptureReport.MaxSpans)
                     {
+                        windows[cause] = kept + 1;
                         if (lastAgreed.Any)
                         {
                             open.Window.Add(lastAgreed.Keep());
                         }
 
-                        open.Window.Add(first); // only the first span of a cause is minimised
+                        open.Window.Add(first); // the first spans of a cause are minimised (CaptureReport.MinimisedSpans)
                     }
 
                     if (report.Spans.Count < CaptureReport.MaxSpans)

@@ -6,6 +6,9 @@ internal sealed class CaptureReport
     /// <summary>The most spans kept (a capture diverging on and off more often is counted past it, in constant memory).</summary>
     public const int MaxSpans = 1000;
 
+    /// <summary>The most spans of one root cause whose frames are kept for the minimiser (the first ones, in frame order).</summary>
+    public const int MinimisedSpans = 5;
+
     /// <summary>The most frames of a span kept for the minimiser (the first divergent frame is the one that matters).</summary>
     public const int MaxWindow = 64;
 

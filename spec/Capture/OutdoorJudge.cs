@@ -127,7 +127,7 @@ internal sealed class OutdoorJudge : ICaptureJudge
 
     // Every boundary the verdict depends on is farther than the box (plus slack): per axis, sphere 0's centre from the
     // 24 m lines (the pick), and each sphere's centre from its cell's edges and from r and 24 − r in its cell (the candidates).
-    private static bool Clear(double wx, double wy, double hx, double hy, BodySphere[] body, bool judgeCells)
+    internal static bool Clear(double wx, double wy, double hx, double hy, BodySphere[] body, bool judgeCells)
     {
         int n = judgeCells ? body.Length : 1;
         for (int i = 0; i < n; i++)
