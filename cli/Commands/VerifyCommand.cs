@@ -83,6 +83,11 @@ internal static class VerifyCommand
             Description = "The fewest invariants that must be tested (not NOT TESTED) for the run to pass (default 1: a run that tested nothing never passes; exit 4).",
             HelpName = "N",
         };
+        var jobs = new Option<int?>("--jobs", "-j")
+        {
+            Description = "Invariants run at once (default: one per processor for the bundled reference and its planted faults; --impl / --impl-cmd run one at a time). The report is the same for any N.",
+            HelpName = "N",
+        };
         var sweeps = new Option<bool>("--sweeps") { Description = "Also run the exhaustive sweeps against an --impl-cmd implementation (millions of round trips; off by default there)." };
         var junit = new Option<string>("--junit") { Description = "Also write the results as JUnit XML (one testcase per invariant) to this file.", HelpName = "FILE" };
         var markdown = new Option<string>("--markdown") { Description = "Also write a markdown summary fit for a PR comment to this file.", HelpName = "FILE" };
@@ -90,7 +95,7 @@ internal static class VerifyCommand
         var datWorld = new DatWorldStage();
         var command = new Command("verify", "Run the invariant catalogue against the reference core, a planted fault, or your implementation (--impl, --impl-cmd), and report.")
         {
-            profile, only, except, scope, seed, baseSeed, fault, quiet, classes, pick, fidelity, cases, maxClasses, sweeps, junit, markdown, minTested,
+            profile, only, except, scope, seed, baseSeed, fault, quiet, classes, pick, fidelity, cases, maxClasses, sweeps, junit, markdown, minTested, jobs,
         };
         foreach (var option in implOptions.All.Concat(datWorld.All))
         {
@@ -123,11 +128,14 @@ internal static class VerifyCommand
                 JunitPath = parse.GetValue(junit),
                 MarkdownPath = parse.GetValue(markdown),
                 MinTested = parse.GetValue(minTested) ?? 1,
+                Jobs = parse.GetValue(jobs),
             };
             return Run(WithBudget(settings, parse.GetValue(sweeps)), datWorld.Read(parse));
         }));
         return command;
     }
+
+    private const int MaxJobs = 64;
 
     private static string DefaultProfile() => ToolEnvironment.Process.ProfileName ?? "pr";
 
@@ -151,6 +159,16 @@ internal static class VerifyCommand
         if (settings.MinTested < 1 || settings.MinTested > InvariantCatalogue.All.Count)
         {
             throw new UsageException($"--min-tested must be between 1 and {InvariantCatalogue.All.Count} (got {settings.MinTested})");
+        }
+
+        if (settings.Jobs is int j && j is < 1 or > MaxJobs)
+        {
+            throw new UsageException($"--jobs must be between 1 and {MaxJobs} (got {j})");
+        }
+
+        if (settings.Jobs > 1 && settings.Implementation.IsExternal)
+        {
+            throw new UsageException("--jobs applies to the bundled reference and its planted faults: --impl / --impl-cmd run one invariant at a time (a port's code need not be thread-safe)");
         }
 
         if (settings.CasesOverride is int n && n is < 1 or > 10_000_000)
@@ -278,7 +296,7 @@ internal static class VerifyCommand
         IReadOnlyList<InvariantResult> results = [];
         ProgressBars.Run($"verify {impl.Name}", Total(settings), advance =>
         {
-            results = CatalogueRunner.RunCatalogue(impl, settings.Profile, only, settings.FixedSeed, settings.MaxClasses, result =>
+            results = CatalogueRunner.RunCatalogue(impl, settings.Profile, VerifyWorkers.For(settings, impl), only, settings.FixedSeed, settings.MaxClasses, result =>
             {
                 finished(result);
                 advance($"{result.Invariant.Id} {VerifyReport.Verdict(result.Status)}");

@@ -56,6 +56,9 @@ internal sealed record VerifySettings
     /// <summary>Gets how many failure classes each failing invariant searches for (<c>--max-classes</c>).</summary>
     public int MaxClasses { get; init; } = AcPhys.Spec.Running.CatalogueRunner.MaxClasses;
 
+    /// <summary>Gets how many invariants run at once (<c>--jobs</c>); null: one per processor where that is safe (<see cref="VerifyWorkers"/>).</summary>
+    public int? Jobs { get; init; }
+
     /// <summary>Gets the JUnit XML file to write (<c>--junit</c>), if any.</summary>
     public string? JunitPath { get; init; }
 

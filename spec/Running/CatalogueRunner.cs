@@ -231,17 +231,37 @@ public static class CatalogueRunner
         IReadOnlyCollection<string>? only = null,
         Seed? fixedSeed = null,
         int maxClasses = MaxClasses,
+        Action<InvariantResult>? progress = null) =>
+        RunCatalogue(impl, profile, CatalogueWorkers.One, only, fixedSeed, maxClasses, progress);
+
+    /// <summary>Runs every invariant of the catalogue under a profile, on one thread or several (<see cref="CatalogueWorkers"/>).</summary>
+    /// <param name="impl">The implementation under test (the caller's thread asks it).</param>
+    /// <param name="profile">The budget.</param>
+    /// <param name="workers">The threads, and the implementation each extra one asks.</param>
+    /// <param name="only">Invariant IDs to run (all when null or empty).</param>
+    /// <param name="fixedSeed">A seed to use for every invariant instead of the profile's.</param>
+    /// <param name="maxClasses">Failure classes each failing invariant searches for (1: stop at its first failure).</param>
+    /// <param name="progress">Called after each invariant, in catalogue order.</param>
+    /// <returns>One result per invariant, in catalogue order: the same on any number of threads.</returns>
+    internal static IReadOnlyList<InvariantResult> RunCatalogue(
+        ICellPhysics impl,
+        Profile profile,
+        CatalogueWorkers workers,
+        IReadOnlyCollection<string>? only = null,
+        Seed? fixedSeed = null,
+        int maxClasses = MaxClasses,
         Action<InvariantResult>? progress = null)
     {
         ulong runBase = profile.BaseSeed ?? Seed.Fresh().Value;
-        var results = new List<InvariantResult>();
-        foreach (var invariant in InvariantCatalogue.All)
+        var chosen = InvariantCatalogue.All.Where(i => only is not { Count: > 0 } || only.Contains(i.Id, StringComparer.OrdinalIgnoreCase)).ToList();
+        if (workers.Count > 1 && chosen.Count > 1)
         {
-            if (only is { Count: > 0 } && !only.Contains(invariant.Id, StringComparer.OrdinalIgnoreCase))
-            {
-                continue;
-            }
+            return ConcurrentCatalogue.Run(chosen, impl, workers, (invariant, mine) => RunInvariant(invariant, mine, profile, runBase, fixedSeed, maxClasses), progress);
+        }
 
+        var results = new List<InvariantResult>();
+        foreach (var invariant in chosen)
+        {
             var result = RunInvariant(invariant, impl, profile, runBase, fixedSeed, maxClasses);
             results.Add(result);
             progress?.Invoke(result);
@@ -251,7 +271,7 @@ public static class CatalogueRunner
     }
 
     /// <summary>
-    /// Runs one invariant of the catalogue as <see cref="RunCatalogue"/> does: its seed derived from the run's base seed
+    /// Runs one invariant of the catalogue as <see cref="RunCatalogue(ICellPhysics, Profile, IReadOnlyCollection{string}?, Seed?, int, Action{InvariantResult}?)"/> does: its seed derived from the run's base seed
     /// and its ID (or the fixed seed), the profile's cases, then the exhaustive sweep of a LandDefs invariant that passed
     /// when the profile sweeps and no seed is fixed. The gate as xunit tests (AcPhys.Xunit) runs each invariant through
     /// this, so its verdicts are <c>acphys verify</c>'s.
