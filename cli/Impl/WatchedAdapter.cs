@@ -74,7 +74,7 @@ internal sealed class WatchedAdapter : ICellPhysics, IDisposable
     /// <inheritdoc/>
     public bool BlockIdToLcoord(CellId id, out Lcoord lcoord)
     {
-        Enter("block_id_to_lcoord");
+        Enter(Op.BlockIdToLcoord);
         try
         {
             return inner.BlockIdToLcoord(id, out lcoord);
@@ -88,7 +88,7 @@ internal sealed class WatchedAdapter : ICellPhysics, IDisposable
     /// <inheritdoc/>
     public bool GidToLcoord(CellId id, out Lcoord lcoord)
     {
-        Enter("gid_to_lcoord");
+        Enter(Op.GidToLcoord);
         try
         {
             return inner.GidToLcoord(id, out lcoord);
@@ -100,15 +100,15 @@ internal sealed class WatchedAdapter : ICellPhysics, IDisposable
     }
 
     /// <inheritdoc/>
-    public CellId LcoordToGid(int x, int y) => Call("lcoord_to_gid", () => inner.LcoordToGid(x, y));
+    public CellId LcoordToGid(int x, int y) => Call(Op.LcoordToGid, () => inner.LcoordToGid(x, y));
 
     /// <inheritdoc/>
-    public bool InboundValidCellId(CellId id) => Call("inbound_valid_cellid", () => inner.InboundValidCellId(id));
+    public bool InboundValidCellId(CellId id) => Call(Op.InboundValidCellId, () => inner.InboundValidCellId(id));
 
     /// <inheritdoc/>
     public bool GetOutsideLcoord(CellId id, float x, float y, out Lcoord lcoord)
     {
-        Enter("get_outside_lcoord");
+        Enter(Op.GetOutsideLcoord);
         try
         {
             return inner.GetOutsideLcoord(id, x, y, out lcoord);
@@ -120,36 +120,36 @@ internal sealed class WatchedAdapter : ICellPhysics, IDisposable
     }
 
     /// <inheritdoc/>
-    public AdjustResult AdjustToOutside(CellId id, float x, float y) => Call("adjust_to_outside", () => inner.AdjustToOutside(id, x, y));
+    public AdjustResult AdjustToOutside(CellId id, float x, float y) => Call(Op.AdjustToOutside, () => inner.AdjustToOutside(id, x, y));
 
     /// <inheritdoc/>
-    public IReadOnlyList<CellId> OutsideCells(CellId cell, IReadOnlyList<Sphere> spheres) => Call("outside_cells", () => inner.OutsideCells(cell, spheres));
+    public IReadOnlyList<CellId> OutsideCells(CellId cell, IReadOnlyList<Sphere> spheres) => Call(Op.OutsideCells, () => inner.OutsideCells(cell, spheres));
 
     /// <inheritdoc/>
-    public FindCellResult FindCell(CellId cell, IReadOnlyList<Sphere> spheres, CellId current) => Call("find_cell", () => inner.FindCell(cell, spheres, current));
+    public FindCellResult FindCell(CellId cell, IReadOnlyList<Sphere> spheres, CellId current) => Call(Op.FindCell, () => inner.FindCell(cell, spheres, current));
 
     /// <inheritdoc/>
-    public IReadOnlyList<CellId> OutsideCellsParts(IReadOnlyList<Part> parts) => Call("outside_cells_parts", () => inner.OutsideCellsParts(parts));
+    public IReadOnlyList<CellId> OutsideCellsParts(IReadOnlyList<Part> parts) => Call(Op.OutsideCellsParts, () => inner.OutsideCellsParts(parts));
 
     /// <inheritdoc/>
     public FindCellResult FindCell(Scene? scene, CellId cell, IReadOnlyList<Sphere> spheres, CellId current) =>
-        Call("find_cell_scene", () => inner.FindCell(scene, cell, spheres, current));
+        Call(Op.FindCellScene, () => inner.FindCell(scene, cell, spheres, current));
 
     /// <inheritdoc/>
     public FindCellResult FindCell(Scene? scene, CellId cell, IReadOnlyList<Sphere> spheres, CellId current, bool loadCells) =>
-        Call("find_cell_transition", () => inner.FindCell(scene, cell, spheres, current, loadCells));
+        Call(Op.FindCellTransition, () => inner.FindCell(scene, cell, spheres, current, loadCells));
 
     /// <inheritdoc/>
     public IReadOnlyList<CellId> OutsideCells(CellId cell, System.Numerics.Vector3 origin, IReadOnlyList<Sphere> spheres) =>
-        Call("outside_cells", () => inner.OutsideCells(cell, origin, spheres));
+        Call(Op.OutsideCells, () => inner.OutsideCells(cell, origin, spheres));
 
     /// <inheritdoc/>
     public FindCellResult FindCell(CellId cell, System.Numerics.Vector3 origin, IReadOnlyList<Sphere> spheres, CellId current) =>
-        Call("find_cell", () => inner.FindCell(cell, origin, spheres, current));
+        Call(Op.FindCell, () => inner.FindCell(cell, origin, spheres, current));
 
     /// <inheritdoc/>
     public FindCellResult FindCellParts(Scene scene, IReadOnlyList<Part> parts, bool loadCells) =>
-        Call(loadCells ? "find_cell_parts_transition" : "find_cell_parts_scene", () => inner.FindCellParts(scene, parts, loadCells));
+        Call(loadCells ? Op.FindCellPartsTransition : Op.FindCellPartsScene, () => inner.FindCellParts(scene, parts, loadCells));
 
     /// <inheritdoc/>
     public IReadOnlyList<FindCellResult> FindCellWalk(WalkRequest walk) =>
@@ -168,6 +168,9 @@ internal sealed class WatchedAdapter : ICellPhysics, IDisposable
         }
     }
 
+    // Named by the protocol's own table, so a hang message names an op that exists (issue 52: it said block_id_to_lcoord).
+    private T Call<T>(Op op, Func<T> body) => Call(OpNames.Name(op), body);
+
     private T Call<T>(string op, Func<T> body)
     {
         Enter(op);
@@ -180,6 +183,8 @@ internal sealed class WatchedAdapter : ICellPhysics, IDisposable
             Exit();
         }
     }
+
+    private void Enter(Op op) => Enter(OpNames.Name(op));
 
     private void Enter(string op)
     {

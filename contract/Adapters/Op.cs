@@ -80,6 +80,23 @@ public static class OpNames
         (Op.FindCellPartsTransition, "find_cell_parts_transition"),
     ];
 
+    /// <summary>Returns the protocol name of one operation.</summary>
+    /// <param name="op">Exactly one operation flag.</param>
+    /// <returns>Its name in protocol v1 (docs/protocol.md).</returns>
+    /// <exception cref="ArgumentOutOfRangeException"><paramref name="op"/> is not exactly one operation.</exception>
+    public static string Name(Op op)
+    {
+        foreach (var (flag, name) in Table)
+        {
+            if (flag == op)
+            {
+                return name;
+            }
+        }
+
+        throw new ArgumentOutOfRangeException(nameof(op), op, "not exactly one operation");
+    }
+
     /// <summary>Returns the protocol names of every flag set in <paramref name="ops"/>.</summary>
     /// <param name="ops">A set of operations.</param>
     /// <returns>The names, in protocol order.</returns>

@@ -22,4 +22,20 @@ public sealed class OpAllTests
         Assert.Equal(Op.None, required & ~Op.All);
         Assert.Equal(Op.All, ReferenceAdapter.Instance.Ops & Op.All);
     }
+
+    [Fact(DisplayName = "OP-NAME: each single operation has one protocol name, which parses back to it; a set of flags has none (issue 52: a watchdog named block_id_to_lcoord)")]
+    public void Name_IsTheProtocolNameOfOneOperation()
+    {
+        var flags = Enum.GetValues<Op>().Where(o => o != Op.None && (o & (o - 1)) == 0).ToArray();
+        Assert.All(flags, o =>
+        {
+            string name = OpNames.Name(o);
+            Assert.Equal([name], OpNames.Names(o));
+            Assert.Equal(o, OpNames.Parse([name], out var unknown));
+            Assert.Empty(unknown);
+        });
+        Assert.Equal("blockid_to_lcoord", OpNames.Name(Op.BlockIdToLcoord));
+        Assert.Throws<ArgumentOutOfRangeException>(() => OpNames.Name(Op.LandDefs));
+        Assert.Throws<ArgumentOutOfRangeException>(() => OpNames.Name(Op.None));
+    }
 }
