@@ -18,7 +18,8 @@ foreach (string target in args)
 {
     try
     {
-        int types = Fuzzer.Instrument(target, static _ => true, Options.Value).Count();
+        var skipped = ValueTypes(target);
+        int types = Fuzzer.Instrument(target, name => !skipped.Contains(name), Options.Value).Count();
         Console.WriteLine($"instrumented {target}: {types} types, {Probes(target)} probes (SharpFuzz)");
     }
     catch (InstrumentationException e) when (e.Message.Contains("already instrumented", StringComparison.Ordinal))
@@ -44,4 +45,11 @@ static int Probes(string path)
         .SelectMany(m => m.Body.Instructions)
         .Count(i => i.OpCode == dnlib.DotNet.Emit.OpCodes.Stsfld && i.Operand is dnlib.DotNet.IField f && f.Name == "PrevLocation"
             && f.DeclaringType?.FullName == "SharpFuzz.Common.Trace");
+}
+
+// The value types of an assembly (enums are not: they have no methods), by SharpFuzz's full name ("Outer/Nested").
+static HashSet<string> ValueTypes(string path)
+{
+    using var module = dnlib.DotNet.ModuleDefMD.Load(File.ReadAllBytes(path));
+    return [.. module.GetTypes().Where(t => t.IsValueType && !t.IsEnum).Select(t => t.FullName)];
 }
