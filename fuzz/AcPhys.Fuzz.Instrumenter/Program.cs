@@ -1,8 +1,9 @@
+using AcPhys.Fuzz.Instrumenter;
 using SharpFuzz;
 
 // Usage: AcPhys.Fuzz.Instrumenter ASSEMBLY.dll...
-// Rewrites each assembly in place with SharpFuzz's AFL edge probes (every type). All assemblies go through this one
-// process on purpose: SharpFuzz draws block ids from one generator with a fixed seed per process, so separate
+// Rewrites each assembly in place with SharpFuzz's AFL edge probes (every type but value types: ProbeChoice.cs). All
+// assemblies go through this one process on purpose: SharpFuzz draws block ids from one generator with a fixed seed per process, so separate
 // `sharpfuzz` runs would hand the same ids to different assemblies' blocks. An assembly SharpFuzz reports as already
 // instrumented is skipped, so running twice over the same files is harmless. Exit 0 when every assembly was
 // instrumented or skipped, 1 on a failure, 2 on a usage error. Each line names the assembly's probes (instrumented
@@ -18,8 +19,7 @@ foreach (string target in args)
 {
     try
     {
-        var skipped = ValueTypes(target);
-        int types = Fuzzer.Instrument(target, name => !skipped.Contains(name), Options.Value).Count();
+        int types = Fuzzer.Instrument(target, ProbeChoice.For(target), Options.Value).Count();
         Console.WriteLine($"instrumented {target}: {types} types, {Probes(target)} probes (SharpFuzz)");
     }
     catch (InstrumentationException e) when (e.Message.Contains("already instrumented", StringComparison.Ordinal))
@@ -47,9 +47,3 @@ static int Probes(string path)
             && f.DeclaringType?.FullName == "SharpFuzz.Common.Trace");
 }
 
-// The value types of an assembly (enums are not: they have no methods), by SharpFuzz's full name ("Outer/Nested").
-static HashSet<string> ValueTypes(string path)
-{
-    using var module = dnlib.DotNet.ModuleDefMD.Load(File.ReadAllBytes(path));
-    return [.. module.GetTypes().Where(t => t.IsValueType && !t.IsEnum).Select(t => t.FullName)];
-}
