@@ -1,8 +1,9 @@
+using AcPhys.Fuzz.Instrumenter;
 using SharpFuzz;
 
 // Usage: AcPhys.Fuzz.Instrumenter ASSEMBLY.dll...
-// Rewrites each assembly in place with SharpFuzz's AFL edge probes (every type). All assemblies go through this one
-// process on purpose: SharpFuzz draws block ids from one generator with a fixed seed per process, so separate
+// Rewrites each assembly in place with SharpFuzz's AFL edge probes (every type but value types: ProbeChoice.cs). All
+// assemblies go through this one process on purpose: SharpFuzz draws block ids from one generator with a fixed seed per process, so separate
 // `sharpfuzz` runs would hand the same ids to different assemblies' blocks. An assembly SharpFuzz reports as already
 // instrumented is skipped, so running twice over the same files is harmless. Exit 0 when every assembly was
 // instrumented or skipped, 1 on a failure, 2 on a usage error. Each line names the assembly's probes (instrumented
@@ -18,7 +19,7 @@ foreach (string target in args)
 {
     try
     {
-        int types = Fuzzer.Instrument(target, static _ => true, Options.Value).Count();
+        int types = Fuzzer.Instrument(target, ProbeChoice.For(target), Options.Value).Count();
         Console.WriteLine($"instrumented {target}: {types} types, {Probes(target)} probes (SharpFuzz)");
     }
     catch (InstrumentationException e) when (e.Message.Contains("already instrumented", StringComparison.Ordinal))
@@ -45,3 +46,4 @@ static int Probes(string path)
         .Count(i => i.OpCode == dnlib.DotNet.Emit.OpCodes.Stsfld && i.Operand is dnlib.DotNet.IField f && f.Name == "PrevLocation"
             && f.DeclaringType?.FullName == "SharpFuzz.Common.Trace");
 }
+

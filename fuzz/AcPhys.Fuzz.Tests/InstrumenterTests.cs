@@ -73,6 +73,36 @@ public sealed unsafe class InstrumenterTests : IDisposable
     }
 
     [Fact]
+    public void The_instrumenter_probes_cores_branches_but_not_its_value_types()
+    {
+        // Issue 51: a probe at the entry of CellId's accessors kept the JIT from inlining them; value types get none.
+        string copy = CopyOf(typeof(LandDefs).Assembly);
+        var instrumented = Fuzzer.Instrument(copy, AcPhys.Fuzz.Instrumenter.ProbeChoice.For(copy), Options.Value).ToList();
+        Assert.Contains(typeof(LandDefs).FullName!, instrumented);
+        Assert.Contains(typeof(CellArray).FullName!, instrumented);
+        Assert.DoesNotContain(typeof(CellId).FullName!, instrumented);
+        Assert.DoesNotContain(typeof(Sphere).FullName!, instrumented);
+
+        var context = new IsolatedContext(directory);
+        try
+        {
+            var core = context.LoadFromAssemblyPath(Path.Combine(directory, "AcPhys.Core.dll"));
+            var toGid = core.GetType(typeof(LandDefs).FullName!)!.GetMethod(nameof(LandDefs.LcoordToGid), [typeof(int), typeof(int)])!;
+            Array.Clear(map);
+            for (int gx = -4; gx < 2045; gx += 7)
+            {
+                Assert.Equal(LandDefs.LcoordToGid(gx, 2040 - gx).ToString(), toGid.Invoke(null, [gx, 2040 - gx])!.ToString());
+            }
+
+            Assert.True(map.Count(b => b != 0) > 3, "LandDefs' probes wrote no edge");
+        }
+        finally
+        {
+            context.Unload();
+        }
+    }
+
+    [Fact]
     public void Instrumented_core_agrees_with_the_original()
     {
         _ = Fuzzer.Instrument(CopyOf(typeof(LandDefs).Assembly), _ => true, Options.Value).ToList();

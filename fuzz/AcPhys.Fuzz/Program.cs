@@ -7,7 +7,8 @@ using SharpFuzz;
 // AcPhys.Fuzz seeds TARGET DIR          write the target's built-in seed inputs into DIR
 // AcPhys.Fuzz dict TARGET FILE          write the target's afl-fuzz dictionary (-x) into FILE (nothing when it has none)
 // AcPhys.Fuzz cmin TARGET SEEDS DIR...  add to SEEDS the inputs of DIR... that cover new tuples (afl-cmin's job)
-// AcPhys.Fuzz bench TARGET [N]          time the test alone on N random 17-byte inputs (no afl-fuzz, no pipes), then the same inputs through the reference physics alone
+// AcPhys.Fuzz bench TARGET [N] [DIR]    time the test alone on N random 17-byte inputs, or DIR's files round robin (no afl-fuzz, no
+//                                       pipes), then the same inputs through the reference physics alone
 // AcPhys.Fuzz warmup TARGET [MS]        run the --impl-cmd warm-up for MS ms, printing the mean time of every 100 inputs
 // AcPhys.Fuzz list                      list targets
 // TARGET may also come from ACPHYS_FUZZ_TARGET; the planted fault from ACPHYS_FAULT (unset or empty: correct core);
@@ -15,7 +16,7 @@ using SharpFuzz;
 // command line: one child for this process's life, restarted after it failed; ACPHYS_IMPL_TIMEOUT seconds per answer).
 // Under afl-fuzz an ACPHYS_IMPL_CMD child is warmed for ACPHYS_FUZZ_WARMUP_MS (default 3000; 0: not) before the
 // fork server starts (Warmup.cs).
-const string Usage = "usage: AcPhys.Fuzz TARGET [INPUT] | replay TARGET FILE... | seeds TARGET DIR | dict TARGET FILE | cmin TARGET SEEDS DIR... | bench TARGET [N] | warmup TARGET [MS] | list";
+const string Usage = "usage: AcPhys.Fuzz TARGET [INPUT] | replay TARGET FILE... | seeds TARGET DIR | dict TARGET FILE | cmin TARGET SEEDS DIR... | bench TARGET [N] [DIR] | warmup TARGET [MS] | list";
 
 // SharpFuzz's probes need a map before any instrumented code runs; Fuzzer.Run swaps in afl-fuzz's shared memory.
 PrivateMap.Attach();
@@ -102,19 +103,28 @@ switch (command)
 
     case "bench":
         {
-            if (rest.Count is < 1 or > 2 || FuzzTargets.Find(rest.Dequeue()) is not { } target || Create(target, subject) is not { } test)
+            if (rest.Count is < 1 or > 3 || FuzzTargets.Find(rest.Dequeue()) is not { } target || Create(target, subject) is not { } test)
             {
                 Console.Error.WriteLine(Usage);
                 return 2;
             }
 
             int n = rest.Count > 0 ? int.Parse(rest.Dequeue(), System.Globalization.CultureInfo.InvariantCulture) : 1_000_000;
-            var (perInput, crashes) = Bench.Run(test, n);
-            Console.WriteLine($"{target.Name}: {n} inputs, {perInput.TotalMicroseconds:F2} us/input, {crashes} crash(es)");
+            string? folder = rest.Count > 0 ? rest.Dequeue() : null;
+            if (folder is not null && !Directory.Exists(folder))
+            {
+                Console.Error.WriteLine($"bench: no input folder '{folder}'");
+                return 2;
+            }
+
+            var inputs = folder is null ? null : Bench.Inputs(folder);
+            var (perInput, crashes) = Bench.Run(test, n, inputs);
+            string from = inputs is null ? "random 17-byte inputs" : $"the {inputs.Count} files of {folder} round robin";
+            Console.WriteLine($"{target.Name}: {n} inputs ({from}), {perInput.TotalMicroseconds:F2} us/input, {crashes} crash(es)");
             if (target.CreatePhysicsOnly() is { } physics)
             {
                 // The same inputs through the reference's physics alone (issue 51): the limit the target is measured against.
-                var (limit, _) = Bench.Run(physics, n);
+                var (limit, _) = Bench.Run(physics, n, inputs);
                 Console.WriteLine($"{target.Name}: physics only (the reference, no judging) {limit.TotalMicroseconds:F2} us/input; the target runs at {100 * limit / perInput:F1} % of that limit");
             }
             return 0;

@@ -30,6 +30,15 @@ internal static class Replay
         }
     }
 
+    /// <summary>Reads a saved input as afl-fuzz would hand it over (cut at afl's MAX_FILE).</summary>
+    /// <param name="path">The input file.</param>
+    /// <returns>The input.</returns>
+    public static byte[] Read(string path)
+    {
+        byte[] data = File.ReadAllBytes(path);
+        return data.Length <= MaxInput ? data : data[..MaxInput];
+    }
+
     /// <summary>Wraps a span test as SharpFuzz's callback: the whole stream (one input) is read into a reused buffer.</summary>
     /// <param name="test">The test.</param>
     /// <returns>The callback; not thread-safe (SharpFuzz runs one input at a time).</returns>
