@@ -57,6 +57,9 @@ internal static class ScenePartsClasses
     /// <summary>A parts query's anchor is a land cell of the neighbouring block, across the block line it is near.</summary>
     public const string AnchorBlockEdge = "parts:anchor-block-edge";
 
+    // Every corner of a part's hull in a cell's frame lies within √3·Reach·r of its centre (PartShapes).
+    private const float HullReach = 1.7321f * PartShapes.Reach + 0.01f;
+
     /// <summary>Returns the parts classes of a scene walk.</summary>
     /// <param name="w">The scene walk.</param>
     /// <returns>The tags, each once.</returns>
@@ -110,6 +113,11 @@ internal static class ScenePartsClasses
     {
         var plane = portal.Plane;
         float d = Centre(part, cell, plane), reach = part.Radius + LandDefs.Epsilon;
+        if (MathF.Abs(d) > HullReach * part.Radius)
+        {
+            return; // no hull in any frame reaches the plane
+        }
+
         var side = BoxSide.Of(plane, BoxSide.InFrame(part, cell.Id, cell.Frame));
         if (MathF.Abs(d) > reach)
         {
