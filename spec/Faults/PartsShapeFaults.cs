@@ -28,7 +28,7 @@ internal static class PartsShapeFaults
         "parts-neighbour-by-sphere",
         "the parts transit adds a portal's neighbour when the part's sphere (in the neighbour's frame) intersects it, not the part's box",
         "facts §5.2: after the gate and the box side, the neighbour is added when box_intersects_cell(part bbox in the neighbour's frame); a port that reused the sphere variant's sphere_intersects_cell (§5.1) answers differently for a flat or long box, or one poking out of its sphere.",
-        ["PARTS-INDOOR-SOUNDNESS", "PARTS-INDOOR-COVERAGE", "PARTS-INDOOR-CONFORMANCE"]);
+        ["PARTS-INDOOR-SOUNDNESS", "PARTS-INDOOR-CONFORMANCE"]);
 
     /// <summary>The box-side test of the transit skipped.</summary>
     public static readonly PlantedFault BoxSideSkipped = new(
