@@ -330,7 +330,9 @@ internal static class PartsIndoorInvariants
             }
         }
 
-        return false;
+        // Static placement: the filter may have dropped the cell whose portal added the hint, and keeps the hint (facts
+        // §4 step 5: ACE never removes null entries) — a listed env id reported not loaded is such a hint.
+        return q.Filtered && q.Answer.Loaded is { } flags && k < flags.Count;
     }
 
     // Static placement from an indoor anchor keeps only the anchor's cell and the loaded cells it sees.
