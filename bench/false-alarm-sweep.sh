@@ -7,12 +7,15 @@
 #   bench/false-alarm-sweep.sh --seeds 1234,5678 --served      # these seeds, also served (`acphys serve`, records)
 #   bench/false-alarm-sweep.sh --seeds 20 --served --served-cases 300 --modes retail,ace
 #   bench/false-alarm-sweep.sh --seeds 20 --cases 1000 --modes current-first,ace   # a smaller in-process budget
+#   bench/false-alarm-sweep.sh --seeds 20 --only PARTS-INDOOR-SOUNDNESS,PARTS-INDOOR-CONFORMANCE  # these invariants only
 #
 # Modes (what the reference declares, and the gate is told): retail; current-first (--pick current-first); ace
 # (--fidelity ace); double (--fidelity double); ace-current-first (both); any one switch by its name
 # (ace-keeps-stale-cells, ace-early-return, …, drop-unloaded-land-cells, reframe-transit). A served run serves the same mode
 # (`acphys serve --pick ... --fidelity ...`), so its hello declares it. Served runs use --served-cases cases per
 # invariant (default 300) to keep the sweep to minutes; in-process runs the full pr budget unless --cases is given.
+# --only ID,ID passes the list to verify --only (both in process and served): a change that touches only some
+# invariants' generators is swept on those alone.
 #
 # Build first: dotnet build -c Release cli/AcPhys.Cli.csproj; the build is copied, so rebuilding meanwhile is safe.
 # Output: one line per run (mode, where, seed, exit, passed/failed/not tested, wall) and every FAIL line; a table in
@@ -26,16 +29,18 @@ seeds=""
 served=0
 served_cases=300
 cases=""
+only=""
 modes="retail,current-first,ace,double,ace-current-first"
 out="/tmp/acphys-false-alarms"
 
-usage() { sed -n '2,20p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; }
+usage() { sed -n '2,23p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; }
 while [[ $# -gt 0 ]]; do
   case "$1" in
     --seeds) seeds="$2"; shift 2 ;;
     --served) served=1; shift ;;
     --served-cases) served_cases="$2"; shift 2 ;;
     --cases) cases="$2"; shift 2 ;;
+    --only) only="$2"; shift 2 ;;
     --modes) modes="$2"; shift 2 ;;
     --out) out="$2"; shift 2 ;;
     -h|--help) usage; exit 0 ;;
@@ -89,10 +94,10 @@ for mode in "${mode_list[@]}"; do
       set +e
       if [[ "$where" == inproc ]]; then
         # shellcheck disable=SC2086
-        "${acphys[@]}" verify -q --base-seed "$seed" ${cases:+--cases "$cases"} $flags > "$log" 2>&1
+        "${acphys[@]}" verify -q --base-seed "$seed" ${cases:+--cases "$cases"} ${only:+--only "$only"} $flags > "$log" 2>&1
       else
         # shellcheck disable=SC2086
-        "${acphys[@]}" verify -q --base-seed "$seed" --cases "$served_cases" --timeout 60 \
+        "${acphys[@]}" verify -q --base-seed "$seed" --cases "$served_cases" --timeout 60 ${only:+--only "$only"} \
           --impl-cmd "${acphys[*]} serve $flags" > "$log" 2>&1
       fi
       rc=$?

@@ -60,6 +60,7 @@ public sealed class IntendedFindingTests
     [Theory(DisplayName = "INTENDED-PROVED (issue 41): a parts fault indoors served under a declaration fails PARTS-INDOOR-CONFORMANCE, and its intended line names no declaration but says what differs")]
     [InlineData("parts-order-lost", "ace")]
     [InlineData("parts-first-part-only", "ace-neighbour-via-visible-cells")]
+    [InlineData("parts-gate-two-sided", "ace-box-side-pairing")]
     public void AServedPartsFaultIsNeverIntended(string fault, string declaration)
     {
         var run = Acphys.Run(["verify", "--impl-cmd", $"{Acphys.ServeCommand} --fault {fault} --fidelity {declaration}", "--only", "PARTS-INDOOR-CONFORMANCE", "--cases", "300", "--timeout", "60", "--max-classes", "1"]);

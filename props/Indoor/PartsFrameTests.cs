@@ -16,22 +16,47 @@ namespace AcPhys.Props.Indoor;
 /// </summary>
 public sealed class PartsFrameTests(ITestOutputHelper output)
 {
-    private static readonly string[] PartsClasses = [ScenePartsClasses.Rotated3D, ScenePartsClasses.OffCentre, ScenePartsClasses.OtherBlock, ScenePartsClasses.BoxBesideDoor];
+    private static readonly string[] PartsClasses =
+    [
+        ScenePartsClasses.Rotated3D, ScenePartsClasses.OffCentre, ScenePartsClasses.OtherBlock, ScenePartsClasses.BoxBesideDoor,
+        ScenePartsClasses.PokingBox, ScenePartsClasses.FlatBox, ScenePartsClasses.LongBox, ScenePartsClasses.TidyBox, ScenePartsClasses.SphereAcrossBoxNot,
+        ScenePartsClasses.BoxAcrossGateShut, ScenePartsClasses.BoxAcrossGateOpen, ScenePartsClasses.AnchorMissingEnv, ScenePartsClasses.AnchorBlockId, ScenePartsClasses.AnchorBlockEdge,
+    ];
 
-    [Fact(DisplayName = "PARTS-INDOOR-SOUNDNESS (shapes): every part's box has its corners within 0.48·r of its origin and is not centred on it, so its hull in any frame lies within 0.83·r (the sphere gate passes for a box crossing a plane)")]
-    public void BoxesStayWithinTheGateBound()
+    [Fact(DisplayName = "PARTS-INDOOR-SOUNDNESS (shapes): boxes are retail-like — each holds its origin off-centre within [−r, r]³ with unequal sides; per part over every 8 steps 4 tidy (corners ≤ 0.48·r), 2 poking (0.86·r to 1.65·r), 1 flat (0.07·r thick), 1 long (1.9·r); hulls within √3·1.65·r")]
+    public void BoxesAreRetailLike()
     {
-        float worst = 0;
+        var counts = new Dictionary<PartShape, int>();
+        float pokingLo = float.MaxValue, pokingHi = 0;
         for (int step = 0; step < 400; step++)
         {
             for (int k = 0; k < 5; k++)
             {
+                var kind = PartShapes.Kind(step, k);
+                counts[kind] = counts.GetValueOrDefault(kind) + 1;
                 var box = PartShapes.Bounds(step, k, 1f);
+                var size = box.Max - box.Min;
                 Assert.NotEqual(Vector3.Zero, box.Min + box.Max);
-                Assert.True(box.Max.X - box.Min.X != box.Max.Y - box.Min.Y, "sides differ per axis");
-                for (int c = 0; c < 8; c++)
+                Assert.True(size.X != size.Y && size.Y != size.Z, "sides differ per axis");
+                Assert.True(Vector3.Max(box.Min, Vector3.Zero) == Vector3.Zero && Vector3.Min(box.Max, Vector3.Zero) == Vector3.Zero, $"step {step} part {k}: {box} does not hold the origin");
+                Assert.True(Vector3.Min(box.Min, new Vector3(-1)) == new Vector3(-1) && Vector3.Max(box.Max, Vector3.One) == Vector3.One, $"step {step} part {k}: {box} leaves [−r, r]³");
+                float far = Enumerable.Range(0, 8).Max(c => box.Corner(c).Length());
+                float thin = MathF.Min(size.X, MathF.Min(size.Y, size.Z)), longest = MathF.Max(size.X, MathF.Max(size.Y, size.Z));
+                switch (kind)
                 {
-                    worst = MathF.Max(worst, box.Corner(c).Length());
+                    case PartShape.Tidy:
+                        Assert.True(far <= 0.48f, $"tidy corner {far}");
+                        break;
+                    case PartShape.Poking:
+                        pokingLo = MathF.Min(pokingLo, far);
+                        pokingHi = MathF.Max(pokingHi, far);
+                        break;
+                    case PartShape.Flat:
+                        Assert.Equal(0.07f, thin, 3);
+                        break;
+                    default:
+                        Assert.Equal(1.9f, longest, 3);
+                        break;
                 }
 
                 // The hull in a frame turned by the part's rotation and then by any cell's yaw stays within √3·Reach.
@@ -39,13 +64,19 @@ public sealed class PartsFrameTests(ITestOutputHelper output)
                 var hull = BoxSide.InFrame(part, part.Cell, new Frame(Vector3.Zero, Quaternion.CreateFromAxisAngle(Vector3.UnitZ, step * 0.1f)));
                 for (int c = 0; c < 8; c++)
                 {
-                    Assert.True(hull.Corner(c).Length() < 0.9f, $"step {step} part {k}: hull corner {hull.Corner(c)} beyond 0.9·r");
+                    Assert.True(hull.Corner(c).Length() <= MathF.Sqrt(3) * PartShapes.Reach, $"step {step} part {k}: hull corner {hull.Corner(c)} beyond √3·Reach");
                 }
             }
         }
 
-        output.WriteLine($"largest local corner {worst:F4}·r (bound {PartShapes.Reach}·r)");
-        Assert.True(worst <= PartShapes.Reach, $"a corner at {worst}·r");
+        output.WriteLine($"kinds over 400 steps × 5 parts: {string.Join(", ", counts.Select(kv => $"{kv.Key} {kv.Value}"))}; poking corners {pokingLo:F3}·r to {pokingHi:F3}·r");
+        Assert.Equal(1000, counts[PartShape.Tidy]);
+        Assert.Equal(500, counts[PartShape.Poking]);
+        Assert.Equal(250, counts[PartShape.Flat]);
+        Assert.Equal(250, counts[PartShape.Long]);
+        Assert.InRange(pokingLo, 0.8f, 1f);
+        Assert.InRange(pokingHi, 1.5f, PartShapes.Reach);
+        Assert.True(PartShapes.Reach < MathF.Sqrt(3));
     }
 
     [Fact(DisplayName = "PARTS-INDOOR-SOUNDNESS (shapes): odd steps pitch and roll every part (its heading-only rotation turns a vector differently), even steps only yaw it")]
@@ -98,7 +129,7 @@ public sealed class PartsFrameTests(ITestOutputHelper output)
         Assert.True(across > 1000);
     }
 
-    [Fact(DisplayName = "PARTS-INDOOR-COVERAGE (classes): the pr cases hit every parts class — rotated-3d, off-centre-box, other-block-frame, box-beside-door (distribution printed)")]
+    [Fact(DisplayName = "PARTS-INDOOR-COVERAGE (classes): the pr cases hit every parts class — rotated-3d, off-centre-box, other-block-frame, box-beside-door, the box shapes, the gate and box disagreements and the anchor kinds (distribution printed)")]
     public void EveryPartsClassIsHit()
     {
         var judge = PartsIndoorInvariants.Coverage;

@@ -27,6 +27,39 @@ internal static class ScenePartsClasses
     /// <summary>At a building door of a listed land cell a part's sphere crosses the door's plane while its box lies wholly on one side and overlaps the cell (the box-side pairing decides, facts §7 #14).</summary>
     public const string BoxBesideDoor = "parts:box-beside-door";
 
+    /// <summary>A poking part's box (<see cref="PartShape.Poking"/>) crosses a listed cell's portal or door plane beyond its sphere's reach (its centre farther than r + EPS from the plane).</summary>
+    public const string PokingBox = "parts:poking-box";
+
+    /// <summary>A flat part's box is tested at a plane (its sphere gate passes there).</summary>
+    public const string FlatBox = "parts:flat-box";
+
+    /// <summary>A long part's box is tested at a plane (its sphere gate passes there).</summary>
+    public const string LongBox = "parts:long-box";
+
+    /// <summary>A tidy part's box is tested at a plane (its sphere gate passes there).</summary>
+    public const string TidyBox = "parts:tidy-box";
+
+    /// <summary>At a listed env cell's portal a part's sphere straddles the plane (within r + EPS) while its box lies wholly on the cell's own side: the box test alone turns it back (facts §5.2).</summary>
+    public const string SphereAcrossBoxNot = "parts:sphere-across-box-not";
+
+    /// <summary>A part's box crosses a listed cell's portal or door plane while its centre lies beyond r + EPS on the side the one-sided gate shuts (facts §5.2, §5.3: the gate decides before the box).</summary>
+    public const string BoxAcrossGateShut = "parts:box-across-gate-shut";
+
+    /// <summary>A part's box crosses a listed cell's portal or door plane while its centre lies beyond r + EPS on the side the one-sided gate lets through (the sphere does not straddle, yet the box test runs).</summary>
+    public const string BoxAcrossGateOpen = "parts:box-across-gate-open";
+
+    /// <summary>A parts query's anchor names an env cell the scene lacks (<see cref="PartAnchors"/>).</summary>
+    public const string AnchorMissingEnv = "parts:anchor-missing-env";
+
+    /// <summary>A parts query's anchor names a landblock id (low word 0xFFFF).</summary>
+    public const string AnchorBlockId = "parts:anchor-block-id";
+
+    /// <summary>A parts query's anchor is a land cell of the neighbouring block, across the block line it is near.</summary>
+    public const string AnchorBlockEdge = "parts:anchor-block-edge";
+
+    // Every corner of a part's hull in a cell's frame lies within √3·Reach·r of its centre (PartShapes).
+    private const float HullReach = 1.7321f * PartShapes.Reach + 0.01f;
+
     /// <summary>Returns the parts classes of a scene walk.</summary>
     /// <param name="w">The scene walk.</param>
     /// <returns>The tags, each once.</returns>
@@ -40,7 +73,12 @@ internal static class ScenePartsClasses
 
         var scene = SceneBuild.Build(w.Scene);
         var tags = new HashSet<string>();
-        foreach (var (_, parts) in queries)
+        foreach (var (_, kind, _) in ScenePartsQueries.Anchors(w))
+        {
+            tags.Add(kind switch { AnchorKind.MissingEnv => AnchorMissingEnv, AnchorKind.BlockId => AnchorBlockId, _ => AnchorBlockEdge });
+        }
+
+        foreach (var (index, parts) in queries)
         {
             if (parts.Any(p => (p.Cell.Value & LandDefs.BlockMask) != (parts[0].Cell.Value & LandDefs.BlockMask)))
             {
@@ -48,11 +86,11 @@ internal static class ScenePartsClasses
             }
 
             var listed = ReferenceAdapter.Instance.FindCellParts(w.Scene, parts, true).Cells;
-            foreach (var (cell, plane, door) in Planes(scene, listed))
+            foreach (var (cell, portal, door) in Planes(scene, listed))
             {
-                foreach (var part in parts)
+                for (int k = 0; k < parts.Length; k++)
                 {
-                    Classify(part, cell, plane, door, tags);
+                    Classify(parts[k], PartShapes.Kind(index, k), cell, portal, door, tags);
                 }
             }
         }
@@ -71,14 +109,42 @@ internal static class ScenePartsClasses
         return MathF.Abs(Centre(part, cell, plane)) < part.Radius && BoxSide.Of(plane, box) is Sidedness.Positive or Sidedness.Negative && cell.Volume.BoxIntersects(box);
     }
 
-    private static void Classify(Part part, EnvCell cell, CellPlane plane, bool door, HashSet<string> tags)
+    private static void Classify(Part part, PartShape shape, EnvCell cell, CellPortal portal, bool door, HashSet<string> tags)
     {
-        if (MathF.Abs(Centre(part, cell, plane)) > part.Radius + LandDefs.Epsilon)
+        var plane = portal.Plane;
+        float d = Centre(part, cell, plane), reach = part.Radius + LandDefs.Epsilon;
+        if (MathF.Abs(d) > HullReach * part.Radius)
         {
-            return; // the sphere gate decides before the box
+            return; // no hull in any frame reaches the plane
         }
 
         var side = BoxSide.Of(plane, BoxSide.InFrame(part, cell.Id, cell.Frame));
+        if (MathF.Abs(d) > reach)
+        {
+            // The sphere does not straddle the plane. Transit skips d < −R (PortalSide) or d > R; entry the mirror (facts §5.2, §5.3).
+            if (side == Sidedness.Crossing)
+            {
+                if (shape == PartShape.Poking)
+                {
+                    tags.Add(PokingBox);
+                }
+
+                bool shut = (portal.PortalSide ? d < 0 : d > 0) != door;
+                tags.Add(shut ? BoxAcrossGateShut : BoxAcrossGateOpen);
+            }
+
+            return; // the sphere gate decides before the box
+        }
+
+        if (shape != PartShape.Poking)
+        {
+            tags.Add(shape switch { PartShape.Flat => FlatBox, PartShape.Long => LongBox, _ => TidyBox });
+        }
+        if (!door && (portal.PortalSide ? side == Sidedness.Negative : side == Sidedness.Positive))
+        {
+            tags.Add(SphereAcrossBoxNot);
+        }
+
         var heading = part with { Frame = part.Frame with { Rotation = PartShapes.Heading(part.Frame.Rotation) } };
         if (side != BoxSide.Of(plane, BoxSide.InFrame(heading, cell.Id, cell.Frame)))
         {
@@ -102,7 +168,7 @@ internal static class ScenePartsClasses
         plane.Distance(cell.Frame.GlobalToLocal(part.Frame.Origin + LandDefs.GetBlockOffset(cell.Id, part.Cell)));
 
     // Every listed env cell's portals, and every listed loaded land cell's building doors (the env cell's portal).
-    private static IEnumerable<(EnvCell Cell, CellPlane Plane, bool Door)> Planes(CellScene scene, IReadOnlyList<CellId> listed)
+    private static IEnumerable<(EnvCell Cell, CellPortal Portal, bool Door)> Planes(CellScene scene, IReadOnlyList<CellId> listed)
     {
         foreach (var id in listed)
         {
@@ -110,7 +176,7 @@ internal static class ScenePartsClasses
             {
                 foreach (var portal in env.Portals.ToArray())
                 {
-                    yield return (env, portal.Plane, false);
+                    yield return (env, portal, false);
                 }
             }
             else if (id.IsLand && scene.IsLoaded(id.Landblock) && scene.GetBuilding(id) is { } building)
@@ -119,7 +185,7 @@ internal static class ScenePartsClasses
                 {
                     if (scene.GetEnvCell(id.WithLow(door.OtherCellId)) is { } cell && door.OtherPortalId < cell.Portals.Length)
                     {
-                        yield return (cell, cell.Portals[door.OtherPortalId].Plane, true);
+                        yield return (cell, cell.Portals[door.OtherPortalId], true);
                     }
                 }
             }

@@ -15,19 +15,24 @@ namespace AcPhys.Spec.Cases;
 /// alone, whatever the implementation answers.
 /// </summary>
 /// <remarks>
-/// Every box's hull in any cell's frame lies within 0.83·r of its part's centre (<see cref="PartShapes"/>), so a box
-/// that crosses a portal's plane passes the part's sphere gate (facts §5.2, §5.3) — the oracles still test the sphere
-/// gate themselves. The converse does not hold: a sphere may cross a door's plane while its box lies wholly on one
-/// side, where the box-side pairing decides (facts §7 #14; the class <c>parts:box-beside-door</c>).
+/// Boxes are retail-like (<see cref="PartShapes"/>): some poke out of their sphere, so a box may cross a portal's plane
+/// while its sphere gate (facts §5.2, §5.3) shuts it out, or while the one-sided gate lets it through with the centre
+/// beyond r; a sphere may cross a plane while its box lies wholly on one side, where the box test decides (facts §7
+/// #14 at a door: the class <c>parts:box-beside-door</c>). The oracles test the gate and the box themselves.
 /// </remarks>
 internal static class ScenePartsQueries
 {
-    private static readonly ConditionalWeakTable<SceneWalk, IReadOnlyList<(int Index, Part[] Parts)>> Cache = [];
+    private static readonly ConditionalWeakTable<SceneWalk, Derived> Cache = [];
 
-    /// <summary>Returns the parts queries of a scene walk, one per query of the walk, in order (computed once per walk).</summary>
+    /// <summary>Returns the parts queries of a scene walk, one per query of the walk and after it its anchor query if it has one (<see cref="PartAnchors"/>), in order (computed once per walk).</summary>
     /// <param name="w">The scene walk.</param>
     /// <returns>The step index and its parts (the first is the anchor); steps with no sphere are left out.</returns>
-    public static IReadOnlyList<(int Index, Part[] Parts)> Of(SceneWalk w) => Cache.GetValue(w, Derive);
+    public static IReadOnlyList<(int Index, Part[] Parts)> Of(SceneWalk w) => Cache.GetValue(w, Derive).All;
+
+    /// <summary>Returns the anchor queries among a scene walk's parts queries (<see cref="PartAnchors"/>), with their kinds.</summary>
+    /// <param name="w">The scene walk.</param>
+    /// <returns>The step index, the kind and the parts.</returns>
+    public static IReadOnlyList<(int Index, AnchorKind Kind, Part[] Parts)> Anchors(SceneWalk w) => Cache.GetValue(w, Derive).Anchors;
 
     /// <summary>Returns part <paramref name="k"/> of a step: the sphere's part, held in the position's cell or across a block line.</summary>
     /// <param name="step">The step index.</param>
@@ -46,10 +51,12 @@ internal static class ScenePartsQueries
         return part;
     }
 
-    private static IReadOnlyList<(int Index, Part[] Parts)> Derive(SceneWalk w)
+    private static Derived Derive(SceneWalk w)
     {
         var trace = SceneWalkRunner.Run(ReferenceAdapter.Instance, w, true);
-        var queries = new List<(int, Part[])>(trace.Count);
+        var scene = SceneBuild.Build(w.Scene);
+        var queries = new List<(int, Part[])>(trace.Count + (trace.Count / PartAnchors.Every));
+        var anchors = new List<(int, AnchorKind, Part[])>();
         foreach (var s in trace)
         {
             if (s.Query.Spheres.Count == 0)
@@ -64,10 +71,17 @@ internal static class ScenePartsQueries
             }
 
             queries.Add((s.Index, parts));
+            if (PartAnchors.Of(scene, s.Index, parts) is { } extra)
+            {
+                queries.Add((s.Index, extra.Parts));
+                anchors.Add((s.Index, extra.Kind, extra.Parts));
+            }
         }
 
-        return queries;
+        return new Derived(queries, anchors);
     }
+
+    private sealed record Derived(IReadOnlyList<(int Index, Part[] Parts)> All, IReadOnlyList<(int Index, AnchorKind Kind, Part[] Parts)> Anchors);
 
     /// <summary>The kind to ask an implementation in: the transition when <paramref name="preferTransition"/> and it offers it, else the kind it offers.</summary>
     /// <param name="ops">Its operations.</param>

@@ -5,7 +5,7 @@ namespace AcPhys.Spec.Faults;
 
 /// <summary>
 /// The parts cell list over a scene (core's <see cref="ScenePartsQuery"/>, retail) re-stated with one defect of
-/// <see cref="PartsIndoorFaults"/> in place, so the core keeps no fault switches. With no defect it answers as core
+/// <see cref="PartsIndoorFaults"/> or <see cref="PartsShapeFaults"/> in place, so the core keeps no fault switches. With no defect it answers as core
 /// (props/Indoor/PartsFaultsAreCaught checks it).
 /// </summary>
 internal static class FaultyPartsQuery
@@ -28,10 +28,9 @@ internal static class FaultyPartsQuery
         }
 
         Part[] parts = given;
-        bool partMajor = fault == PartsIndoorFaults.OrderLost;
         Part[] probing = fault == PartsIndoorFaults.FirstPartOnly ? parts[..1] : parts;
         Part[] entering = fault == PartsIndoorFaults.FirstPartOnly || fault == PartsIndoorFaults.BuildingAnchorOnly ? parts[..1] : parts;
-        bool untransformed = fault == PartsIndoorFaults.BoxUntransformed;
+        var defects = new Defects(fault == PartsIndoorFaults.BoxUntransformed, fault == PartsIndoorFaults.OrderLost, fault);
         var position = parts[0].Cell;
         bool hits = false;
         bool indoor = position.IsIndoorByLowWord;
@@ -39,6 +38,11 @@ internal static class FaultyPartsQuery
         if (indoor)
         {
             visible = scene.GetEnvCell(position) is not null;
+            if (!visible && fault == PartsShapeFaults.MissingAnchorEmpty)
+            {
+                return false; // the port bails out on an anchor cell it cannot find
+            }
+
             hits = true;
             array.Add(position, visible);
         }
@@ -60,7 +64,7 @@ internal static class FaultyPartsQuery
 
                 if (entry.Id.IsEnv && scene.GetEnvCell(entry.Id) is { } env)
                 {
-                    Transit(array, scene, env, probing, parts, untransformed, partMajor);
+                    Transit(array, scene, env, probing, parts, defects);
                 }
                 else if (entry.Id.IsLand)
                 {
@@ -71,7 +75,7 @@ internal static class FaultyPartsQuery
                         {
                             if (scene.GetEnvCell(entry.Id.WithLow(door.OtherCellId)) is { } cell)
                             {
-                                hits |= Enter(array, scene, cell, door.OtherPortalId, entering, probing, parts, untransformed, partMajor);
+                                hits |= Enter(array, scene, cell, door.OtherPortalId, entering, probing, parts, defects);
                             }
                         }
                     }
@@ -95,8 +99,9 @@ internal static class FaultyPartsQuery
         portal.Plane.Distance(cell.Frame.GlobalToLocal(part.Frame.Origin + LandDefs.GetBlockOffset(cell.Id, part.Cell)));
 
     // EnvTransitParts.FindTransitCells, facts §5.2, over the probing parts; the outdoor cells by all parts.
-    private static void Transit(CellArray array, IScene scene, EnvCell cell, Part[] probing, Part[] parts, bool untransformed, bool partMajor = false)
+    private static void Transit(CellArray array, IScene scene, EnvCell cell, Part[] probing, Part[] parts, Defects defects)
     {
+        bool untransformed = defects.Untransformed, partMajor = defects.PartMajor;
         bool checkOutside = false;
         var portals = cell.Portals.ToArray();
         var decided = new bool[portals.Length];
@@ -120,13 +125,13 @@ internal static class FaultyPartsQuery
                 }
 
                 float r = part.Radius + LandDefs.Epsilon, d = Distance(part, cell, portal);
-                if (portal.PortalSide ? d < -r : d > r)
+                var side = BoxSide.Of(portal.Plane, BoxIn(part, cell, untransformed));
+                if (!defects.Gate(side, portal.PortalSide ? d < -r : d > r, MathF.Abs(d) > r))
                 {
                     continue;
                 }
 
-                var side = BoxSide.Of(portal.Plane, BoxIn(part, cell, untransformed));
-                if ((side == Sidedness.Positive && !portal.PortalSide) || (side == Sidedness.Negative && portal.PortalSide))
+                if (defects.Fault != PartsShapeFaults.BoxSideSkipped && ((side == Sidedness.Positive && !portal.PortalSide) || (side == Sidedness.Negative && portal.PortalSide)))
                 {
                     continue;
                 }
@@ -154,7 +159,7 @@ internal static class FaultyPartsQuery
                     continue;
                 }
 
-                if (other.Volume.BoxIntersects(BoxIn(part, other, untransformed)))
+                if (defects.Fault == PartsShapeFaults.NeighbourBySphere ? SphereReaches(part, other) : other.Volume.BoxIntersects(BoxIn(part, other, untransformed)))
                 {
                     array.Add(other.Id, true);
                     if (Decide())
@@ -172,7 +177,7 @@ internal static class FaultyPartsQuery
     }
 
     // EnvTransitParts.CheckBuildingTransit, facts §5.3 (retail box-side pairing), over the entering parts.
-    private static bool Enter(CellArray array, IScene scene, EnvCell cell, ushort portalId, Part[] entering, Part[] probing, Part[] parts, bool untransformed, bool partMajor = false)
+    private static bool Enter(CellArray array, IScene scene, EnvCell cell, ushort portalId, Part[] entering, Part[] probing, Part[] parts, Defects defects)
     {
         if (portalId == BldPortal.None || portalId >= cell.Portals.Length)
         {
@@ -183,22 +188,35 @@ internal static class FaultyPartsQuery
         foreach (var part in entering)
         {
             float r = part.Radius + LandDefs.Epsilon, d = Distance(part, cell, portal);
-            if (portal.PortalSide ? d > r : d < -r)
+            var box = BoxIn(part, cell, defects.Untransformed);
+            var side = BoxSide.Of(portal.Plane, box);
+            if (!defects.Gate(side, portal.PortalSide ? d > r : d < -r, MathF.Abs(d) > r))
             {
                 continue;
             }
 
-            var box = BoxIn(part, cell, untransformed);
-            var side = BoxSide.Of(portal.Plane, box);
             var inside = portal.PortalSide ? Sidedness.Negative : Sidedness.Positive;
             if ((side == Sidedness.Crossing || side == inside) && cell.Volume.BoxIntersects(box))
             {
                 array.Add(cell.Id, true);
-                Transit(array, scene, cell, probing, parts, untransformed, partMajor);
+                Transit(array, scene, cell, probing, parts, defects);
                 return true;
             }
         }
 
         return false;
+    }
+
+    // parts-neighbour-by-sphere: the part's sphere in the neighbour's frame (block offset applied), as §5.1's spheres.
+    private static bool SphereReaches(Part part, EnvCell other) =>
+        other.Volume.SphereIntersects(new Sphere(other.Frame.GlobalToLocal(part.Frame.Origin + LandDefs.GetBlockOffset(other.Id, part.Cell)), part.Radius)) != BoundingType.Outside;
+
+    // The defects the transit and entry checks carry.
+    private readonly record struct Defects(bool Untransformed, bool PartMajor, PlantedFault? Fault)
+    {
+        // Whether the part goes on to the box test: retail's one-sided gate (facts §5.2, §5.3), a two-sided one, or the box first (a crossing box passes).
+        public bool Gate(Sidedness side, bool shut, bool apart) =>
+            Fault == PartsShapeFaults.GateTwoSided ? !apart
+            : (Fault == PartsShapeFaults.BoxBeforeGate && side == Sidedness.Crossing) || !shut;
     }
 }

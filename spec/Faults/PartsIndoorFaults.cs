@@ -47,11 +47,11 @@ internal static class PartsIndoorFaults
     /// <summary>Gets every fault of the parts variant indoors.</summary>
     public static IReadOnlyList<PlantedFault> All { get; } = [FirstPartOnly, BoxUntransformed, BuildingAnchorOnly, OrderLost, AceBoxSideUndeclared];
 
-    /// <summary>Returns an adapter carrying a fault of the parts variant indoors, or null for another fault.</summary>
+    /// <summary>Returns an adapter carrying a fault of the parts variant indoors (this family's or <see cref="PartsShapeFaults"/>'), or null for another fault.</summary>
     /// <param name="fault">The fault.</param>
     /// <returns>The adapter, or null.</returns>
     public static ICellPhysics? Create(PlantedFault fault) =>
         fault == AceBoxSideUndeclared ? PortShimFaults.AnnouncingRetail(new ReferenceAdapter(PickPolicy.Retail) { Indoor = IndoorFidelity.Retail with { AceBoxSidePairing = true } })
-        : All.Contains(fault) ? new PartsFaultyPhysics(fault)
+        : All.Contains(fault) || PartsShapeFaults.All.Contains(fault) ? new PartsFaultyPhysics(fault)
         : null;
 }

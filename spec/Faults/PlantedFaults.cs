@@ -180,7 +180,7 @@ public static class PlantedFaults
         TruncFloor, NanAsZero, MapEdge2040, SignExtendBlockY, DropBlockLength, NoEpsSnap, InboundXOnly,
         Clamp106, InCellNeighbours, ElseDiagonal, SphereGuardInverted, SphereLeak, NoReset, NoHysteresis, StickyPick, AceSameBlockGuard, AceEveryPartAnchors,
         NoSphereNoCell, NoSphereOriginIgnored, EnvPositionContains, BlockIdZeroOk, TouchInclusive, FirstHitOutdoorPick, CheckedCast,
-        .. IndoorFaults.All, .. PartsIndoorFaults.All, .. PartsFrameFaults.All,
+        .. IndoorFaults.All, .. PartsIndoorFaults.All, .. PartsFrameFaults.All, .. PartsShapeFaults.All,
         .. PortShimFaults.All,
     ];
 

@@ -22,8 +22,8 @@ internal static class PartsIndoorInvariants
     /// <summary>PARTS-INDOOR-SOUNDNESS.</summary>
     public static readonly Invariant<SceneWalk> Soundness = new(
         "PARTS-INDOOR-SOUNDNESS",
-        "In a scene, every loaded env cell the parts list names, other than the anchor's own, is reached by some part's box (within 1 mm, in that cell's frame); every land cell lies in the smallest cell rectangle holding the anchor's column and every part's box (within 1 mm); none appears twice; and after static placement from an indoor anchor every loaded cell is the anchor's or one it sees.",
-        "facts §3.4, §4 step 5, §5.2, §5.3, §5.9",
+        "In a scene, every loaded env cell the parts list names, other than the anchor's own, is reached by some part's box (within 1 mm, in that cell's frame); every land cell lies in the smallest cell rectangle holding the anchor's column and every part's box (within 1 mm); none appears twice; after static placement from an indoor anchor every loaded cell is the anchor's or one it sees; and an anchor indoor by its low word (a block id too) that names no loaded env cell is listed alone, flagged not loaded, with HitsInteriorCell set when reported.",
+        "facts §1.1, §3.4, §4 steps 3–5, §5.2, §5.3, §5.9",
         Op.None,
         ScenePartsDomain.Instance,
         (impl, w) => Judge(impl, w, false, Sound),
@@ -92,6 +92,12 @@ internal static class PartsIndoorInvariants
         }
 
         var anchor = q.Parts[0];
+        if (MissingAnchor(impl, scene, q) is string missing)
+        {
+            applied = true;
+            return missing;
+        }
+
         var range = LandRange(q.Parts);
         for (int k = 0; k < cells.Count; k++)
         {
@@ -269,6 +275,31 @@ internal static class PartsIndoorInvariants
         return applied ? Outcome.Holds : Outcome.Vacuous;
     }
 
+    // An anchor indoor by its low word (an env id, or a block id 0xFFFF: facts §1.1) that names no loaded env cell is
+    // added with its load flag false and sets HitsInteriorCell (§4 step 3); no closure runs from it (step 4) and the
+    // filter keeps it (step 5: its own id), so the list is the anchor alone. ACE's stale cells keep earlier entries.
+    private static string? MissingAnchor(ICellPhysics impl, CellScene scene, Query q)
+    {
+        var anchor = q.Parts[0].Cell;
+        if (!anchor.IsIndoorByLowWord || scene.GetEnvCell(anchor) is not null || impl.Indoor.AceKeepsStaleCells)
+        {
+            return null;
+        }
+
+        var cells = q.Answer.Cells;
+        if (cells.Count == 0 || cells[0] != anchor || cells.Count != 1)
+        {
+            return $"the anchor {anchor} names no loaded env cell, so the list is the anchor alone (facts §4 steps 3–4), but it is [{string.Join(", ", cells)}]";
+        }
+
+        if (q.Answer.Loaded is { } loaded && loaded.Count > 0 && loaded[0])
+        {
+            return $"the anchor {anchor} names no loaded env cell, but its load flag is true";
+        }
+
+        return q.Answer.HitsInteriorCell == false ? $"the anchor {anchor} is indoor by its low word (facts §1.1, §4 step 3), but HitsInteriorCell is false" : null;
+    }
+
     // The closure runs only from a loaded anchor (facts §4 step 4: visible).
     private static bool Visible(CellScene scene, CellId anchor) =>
         anchor.IsIndoorByLowWord ? scene.GetEnvCell(anchor) is not null : anchor.IsLand && scene.IsLoaded(anchor.Landblock);
@@ -299,7 +330,9 @@ internal static class PartsIndoorInvariants
             }
         }
 
-        return false;
+        // Static placement: the filter may have dropped the cell whose portal added the hint, and keeps the hint (facts
+        // §4 step 5: ACE never removes null entries) — a listed env id reported not loaded is such a hint.
+        return q.Filtered && q.Answer.Loaded is { } flags && k < flags.Count;
     }
 
     // Static placement from an indoor anchor keeps only the anchor's cell and the loaded cells it sees.
