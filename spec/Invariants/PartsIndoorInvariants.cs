@@ -287,7 +287,7 @@ internal static class PartsIndoorInvariants
         }
 
         var cells = q.Answer.Cells;
-        if (cells.Count == 0 || cells[0] != anchor || cells.Count != 1)
+        if (cells.Count != 1 || cells[0] != anchor)
         {
             return $"the anchor {anchor} names no loaded env cell, so the list is the anchor alone (facts §4 steps 3–4), but it is [{string.Join(", ", cells)}]";
         }
