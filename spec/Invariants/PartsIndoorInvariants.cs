@@ -73,7 +73,7 @@ internal static class PartsIndoorInvariants
         {
             var answer = impl.FindCellParts(w.Scene, parts, loadCells);
             var anchor = parts[0].Cell;
-            var q = new Query(index, parts, answer, anchor.IsIndoorByLowWord ? built.GetEnvCell(anchor) : null, anchor.IsIndoorByLowWord && !(loadCells && !impl.Indoor.AceTransitionFilters));
+            var q = new Query(index, parts, answer, anchor.IsIndoorByLowWord ? built.GetEnvCell(anchor) : null, anchor.IsIndoorByLowWord && !(loadCells && !impl.Indoor.AceTransitionFilters), w.Scene);
             if (check(impl, built, q, ref applied) is string why)
             {
                 return Outcome.ViolatedAt(index, $"step {index} ({(loadCells ? "find_cell_parts_transition" : "find_cell_parts_scene")}, {parts.Length} part{(parts.Length == 1 ? string.Empty : "s")}, anchor {anchor}): {why}");
@@ -109,6 +109,11 @@ internal static class PartsIndoorInvariants
             }
 
             var env = id.IsEnv ? scene.GetEnvCell(id) : null;
+            if (env is null && id.IsIndoorByLowWord && id != anchor.Cell && !impl.Indoor.AceKeepsStaleCells && !LoadHint(impl, scene, q, id))
+            {
+                return $"{id} names no loaded env cell, and is neither the anchor nor a load hint (a portal target of a cell the closure walked: facts §4 step 3, §5.1)";
+            }
+
             if (env is not null && id != anchor.Cell && !q.Parts.Any(p => Overlaps(p, env, Margin)))
             {
                 return $"{id} is listed but no part's box comes within 1 mm of it";
@@ -318,21 +323,58 @@ internal static class PartsIndoorInvariants
 
         foreach (var c in q.Answer.Cells)
         {
-            if (c != id && scene.GetEnvCell(c) is { } e && !e.Sees(id))
+            if (c != id && scene.GetEnvCell(c) is { } e && !e.Sees(id) && LeadsTo(impl, e, id))
             {
-                foreach (var p in e.Portals)
-                {
-                    if (!p.LeadsOutside(impl.Indoor) && c.WithLow(p.OtherCellId) == id)
-                    {
-                        return true;
-                    }
-                }
+                return true;
             }
         }
 
         // Static placement: the filter may have dropped the cell whose portal added the hint, and keeps the hint (facts
-        // §4 step 5: ACE never removes null entries) — a listed env id reported not loaded is such a hint.
-        return q.Filtered && q.Answer.Loaded is { } flags && k < flags.Count;
+        // §4 step 5: ACE never removes null entries) — so a loaded cell of the scene, listed or not, must lead to the
+        // id by a portal without seeing it.
+        return q.Filtered && q.Declared.Cells.Any(c => scene.GetEnvCell(c.Id) is { } e && e.Id != id && !e.Sees(id) && LeadsTo(impl, e, id));
+    }
+
+    // An env id no loaded cell answers to, other than the anchor, is a load hint (facts §4 step 3, §5.1): the target of
+    // a portal of a loaded env cell the closure walked, under ACE's bare 16-bit key when ace-load-hint-low-key is
+    // declared (§7 #11). Walked cells are the listed ones; after static placement the filter may have dropped the
+    // walker and keeps the hint (§4 step 5), so then any loaded cell of the scene.
+    private static bool LoadHint(ICellPhysics impl, CellScene scene, Query q, CellId id)
+    {
+        var walkers = q.Filtered ? q.Declared.Cells.Select(c => c.Id) : q.Answer.Cells.Where(c => c.IsEnv);
+        foreach (var w in walkers)
+        {
+            if (scene.GetEnvCell(w) is not { } cell)
+            {
+                continue;
+            }
+
+            foreach (var p in cell.Portals)
+            {
+                var target = w.WithLow(p.OtherCellId);
+                var key = impl.Indoor.AceLoadHintLowKey ? new CellId(p.OtherCellId) : target;
+                if (key == id && !p.LeadsOutside(impl.Indoor) && (scene.GetEnvCell(target) is null || (impl.Indoor.AceNeighbourViaVisibleCells && !cell.Sees(target))))
+                {
+                    return true;
+                }
+            }
+        }
+
+        return false;
+    }
+
+    // Whether an env cell has a portal (not an exit) whose neighbour is the id.
+    private static bool LeadsTo(ICellPhysics impl, EnvCell cell, CellId id)
+    {
+        foreach (var p in cell.Portals)
+        {
+            if (!p.LeadsOutside(impl.Indoor) && cell.Id.WithLow(p.OtherCellId) == id)
+            {
+                return true;
+            }
+        }
+
+        return false;
     }
 
     // Static placement from an indoor anchor keeps only the anchor's cell and the loaded cells it sees.
@@ -401,7 +443,7 @@ internal static class PartsIndoorInvariants
         return new LandRect(lox - Margin, loy - Margin, hix + Margin, hiy + Margin);
     }
 
-    private sealed record Query(int Index, Part[] Parts, FindCellResult Answer, EnvCell? AnchorEnv, bool Filtered);
+    private sealed record Query(int Index, Part[] Parts, FindCellResult Answer, EnvCell? AnchorEnv, bool Filtered, Scene Declared);
 
     private readonly record struct LandRect(double LoX, double LoY, double HiX, double HiY)
     {
