@@ -2,6 +2,7 @@ using System.Numerics;
 using AcPhys.Contract;
 using AcPhys.Core;
 using AcPhys.Formats.Cases;
+using AcPhys.Formats.Dat;
 using AcPhys.Spec.Cases;
 
 namespace AcPhys.Spec.Invariants;
@@ -241,6 +242,7 @@ internal static class PartsIndoorInvariants
     {
         var reference = Invariants.Conformance.ReferenceFor(impl);
         var queries = ScenePartsQueries.Of(w);
+        var scene = Transports.ScenesAsRecords(impl) ? DatRoundTrip.Of(w.Scene) : w.Scene; // what the implementation was sent (docs/conformance.md)
         bool applied = false;
         foreach (bool loadCells in new[] { false, true })
         {
@@ -253,21 +255,12 @@ internal static class PartsIndoorInvariants
             foreach (var (index, parts) in queries)
             {
                 applied = true;
-                var expected = reference.FindCellParts(w.Scene, parts, loadCells);
+                var expected = reference.FindCellParts(scene, parts, loadCells);
                 var got = impl.FindCellParts(w.Scene, parts, loadCells);
-                if (!got.Cells.SequenceEqual(expected.Cells))
+                // A difference a tie probe's answer explains is the arithmetic's, not the port's (docs/conformance.md, "Scenes").
+                if (Difference(got, expected) is string why && PartsProbes.Of(parts).All(p => Difference(got, reference.FindCellParts(scene, p, loadCells)) is not null))
                 {
-                    return Outcome.ViolatedAt(index, $"step {index} ({kind}): cells [{string.Join(", ", got.Cells)}], reference [{string.Join(", ", expected.Cells)}]");
-                }
-
-                if (got.Loaded is { } loaded && expected.Loaded is { } want && !loaded.SequenceEqual(want))
-                {
-                    return Outcome.ViolatedAt(index, $"step {index} ({kind}): load-hint flags [{string.Join(", ", loaded)}], reference [{string.Join(", ", want)}] for [{string.Join(", ", expected.Cells)}]");
-                }
-
-                if (got.HitsInteriorCell is bool hits && hits != expected.HitsInteriorCell)
-                {
-                    return Outcome.ViolatedAt(index, $"step {index} ({kind}): HitsInteriorCell {hits}, reference {expected.HitsInteriorCell}");
+                    return Outcome.ViolatedAt(index, $"step {index} ({kind}): {why}");
                 }
 
                 if (!got.Containing.IsNone)
@@ -278,6 +271,22 @@ internal static class PartsIndoorInvariants
         }
 
         return applied ? Outcome.Holds : Outcome.Vacuous;
+    }
+
+    // The cells in order, the load-hint flags and HitsInteriorCell when reported, against the reference's.
+    private static string? Difference(FindCellResult got, FindCellResult expected)
+    {
+        if (!got.Cells.SequenceEqual(expected.Cells))
+        {
+            return $"cells [{string.Join(", ", got.Cells)}], reference [{string.Join(", ", expected.Cells)}]";
+        }
+
+        if (got.Loaded is { } loaded && expected.Loaded is { } want && !loaded.SequenceEqual(want))
+        {
+            return $"load-hint flags [{string.Join(", ", loaded)}], reference [{string.Join(", ", want)}] for [{string.Join(", ", expected.Cells)}]";
+        }
+
+        return got.HitsInteriorCell is bool hits && hits != expected.HitsInteriorCell ? $"HitsInteriorCell {hits}, reference {expected.HitsInteriorCell}" : null;
     }
 
     // An anchor indoor by its low word (an env id, or a block id 0xFFFF: facts §1.1) that names no loaded env cell is
