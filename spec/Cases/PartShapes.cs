@@ -50,6 +50,16 @@ internal static class PartShapes
         _ => PartShape.Long,
     };
 
+    /// <summary>
+    /// Returns whether part <paramref name="k"/> at a step is Always2D: 1 in 4 non-anchor parts of every step, and the
+    /// anchor on 1 step in 4. Retail's parts add_all_outside_cells takes such a part's square ±r around its raw origin,
+    /// not its box (facts §3.4); the portal and door tests take its box all the same (§5.2, §5.3).
+    /// </summary>
+    /// <param name="step">The step index.</param>
+    /// <param name="k">The part's index (0 = the anchor).</param>
+    /// <returns>True for an Always2D part.</returns>
+    public static bool Always2D(int step, int k) => k == 0 ? (step & 3) == 2 : ((step + (k * 3)) & 3) == 1;
+
     /// <summary>Returns whether a step's parts are pitched and rolled as well as yawed.</summary>
     /// <param name="step">The step index.</param>
     /// <returns>True on odd steps.</returns>

@@ -57,6 +57,15 @@ internal static class ScenePartsClasses
     /// <summary>A parts query's anchor is a land cell of the neighbouring block, across the block line it is near.</summary>
     public const string AnchorBlockEdge = "parts:anchor-block-edge";
 
+    /// <summary>From an indoor anchor an Always2D part's square ±r (facts §3.4) changes the land cells an exit lists: the reference's list differs with the part taken as a box.</summary>
+    public const string Always2DOutside = "parts:always2d-outside";
+
+    /// <summary>A part is held in a portal neighbour of the anchor's cell (or a door's env cell of its land cell), in the same block frame (<see cref="PartCells"/>).</summary>
+    public const string HeldInNeighbour = "parts:held-in-neighbour";
+
+    /// <summary>A part is held in an env cell of another block than the anchor's, its origin re-based by the block offset (<see cref="PartCells"/>, facts §5.8).</summary>
+    public const string HeldOtherBlockCell = "parts:held-other-block-cell";
+
     // Every corner of a part's hull in a cell's frame lies within √3·Reach·r of its centre (PartShapes).
     private const float HullReach = 1.7321f * PartShapes.Reach + 0.01f;
 
@@ -85,7 +94,13 @@ internal static class ScenePartsClasses
                 tags.Add(OtherBlock);
             }
 
+            Held(parts, tags);
             var listed = ReferenceAdapter.Instance.FindCellParts(w.Scene, parts, true).Cells;
+            if (!tags.Contains(Always2DOutside) && Always2DDecides(w, parts, listed))
+            {
+                tags.Add(Always2DOutside);
+            }
+
             foreach (var (cell, portal, door) in Planes(scene, listed))
             {
                 for (int k = 0; k < parts.Length; k++)
@@ -107,6 +122,32 @@ internal static class ScenePartsClasses
     {
         var box = BoxSide.InFrame(part, cell.Id, cell.Frame);
         return MathF.Abs(Centre(part, cell, plane)) < part.Radius && BoxSide.Of(plane, box) is Sidedness.Positive or Sidedness.Negative && cell.Volume.BoxIntersects(box);
+    }
+
+    // Parts held in another env cell than the anchor's: in its block, or in another block.
+    private static void Held(Part[] parts, HashSet<string> tags)
+    {
+        var anchor = parts[0].Cell;
+        for (int k = 1; k < parts.Length; k++)
+        {
+            var cell = parts[k].Cell;
+            if (cell.IsEnv && cell != anchor)
+            {
+                tags.Add((cell.Value & LandDefs.BlockMask) == (anchor.Value & LandDefs.BlockMask) ? HeldInNeighbour : HeldOtherBlockCell);
+            }
+        }
+    }
+
+    // From an env anchor whose list holds land cells (an exit ran add_all_outside_cells), the list with every part taken as a box differs.
+    private static bool Always2DDecides(SceneWalk w, Part[] parts, IReadOnlyList<CellId> listed)
+    {
+        if (!parts[0].Cell.IsEnv || !parts.Any(p => p.Always2D) || !listed.Any(id => id.IsLand))
+        {
+            return false;
+        }
+
+        var boxes = parts.Select(p => p with { Always2D = false }).ToArray();
+        return !ReferenceAdapter.Instance.FindCellParts(w.Scene, boxes, true).Cells.SequenceEqual(listed);
     }
 
     private static void Classify(Part part, PartShape shape, EnvCell cell, CellPortal portal, bool door, HashSet<string> tags)

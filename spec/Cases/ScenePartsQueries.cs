@@ -10,7 +10,8 @@ namespace AcPhys.Spec.Cases;
 /// retail client (movement transitions), and at each query each body sphere becomes a part whose origin is its centre, radius r,
 /// its box and rotation <see cref="PartShapes"/>'s (off-centre boxes of unequal sides, yawed, and pitched and rolled
 /// on odd steps), held in the position's cell and block frame — or, for every other non-anchor part near a block line,
-/// in a land cell of the neighbouring block (<see cref="PartFrames"/>). The scene kits, their routes (through doors,
+/// in a land cell of the neighbouring block (<see cref="PartFrames"/>), or in another env cell: a portal neighbour, or
+/// one of another block (<see cref="PartCells"/>); some parts are Always2D (<see cref="PartShapes.Always2D"/>). The scene kits, their routes (through doors,
 /// along walls, across block lines) and the shrinker are the sphere walks'; the parts queries follow from the case
 /// alone, whatever the implementation answers.
 /// </summary>
@@ -42,7 +43,7 @@ internal static class ScenePartsQueries
     /// <returns>The part.</returns>
     public static Part PartOf(int step, int k, CellId cell, Sphere sphere)
     {
-        var part = new Part(cell, new Frame(sphere.Center, PartShapes.Rotation(step, k)), PartShapes.Bounds(step, k, sphere.Radius), sphere.Radius, false);
+        var part = new Part(cell, new Frame(sphere.Center, PartShapes.Rotation(step, k)), PartShapes.Bounds(step, k, sphere.Radius), sphere.Radius, PartShapes.Always2D(step, k));
         if (PartFrames.Across(step, k) && PartFrames.AcrossLine(cell, sphere.Center) is { } across)
         {
             part = part with { Cell = across.Cell, Frame = part.Frame with { Origin = across.Origin } };
@@ -67,7 +68,7 @@ internal static class ScenePartsQueries
             var parts = new Part[s.Query.Spheres.Count];
             for (int k = 0; k < parts.Length; k++)
             {
-                parts[k] = PartOf(s.Index, k, s.Query.Cell, s.Query.Spheres[k]);
+                parts[k] = PartCells.Hold(w.Scene, scene, s.Index, k, s.Query.Cell, PartOf(s.Index, k, s.Query.Cell, s.Query.Spheres[k]));
             }
 
             queries.Add((s.Index, parts));

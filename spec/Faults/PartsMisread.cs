@@ -4,7 +4,7 @@ using AcPhys.Spec.Cases;
 
 namespace AcPhys.Spec.Faults;
 
-/// <summary>How a port with a frame fault of <see cref="PartsFrameFaults"/> reads the parts it is asked about.</summary>
+/// <summary>How a port with a frame fault of <see cref="PartsFrameFaults"/> or <see cref="PartsObjectFaults"/> reads the parts it is asked about.</summary>
 internal static class PartsMisread
 {
     /// <summary>Returns the parts as the faulty port reads them.</summary>
@@ -21,7 +21,7 @@ internal static class PartsMisread
                 : fault == PartsFrameFaults.YawOnly ? p with { Frame = p.Frame with { Rotation = PartShapes.Heading(p.Frame.Rotation) } }
                 : fault == PartsFrameFaults.BoxCentred ? p with { Bounds = PartShapes.Centred(p.Bounds) }
                 : fault == PartsFrameFaults.AnchorFrame ? p with { Cell = parts[0].Cell }
-                : p;
+                : PartsObjectFaults.Misread(parts, p, fault);
         }
 
         return read;

@@ -182,6 +182,7 @@ public static class PlantedFaults
         NoSphereNoCell, NoSphereOriginIgnored, EnvPositionContains, BlockIdZeroOk, TouchInclusive, FirstHitOutdoorPick, CheckedCast,
         .. IndoorFaults.All, .. PartsIndoorFaults.All, .. PartsFrameFaults.All, .. PartsShapeFaults.All,
         .. PortShimFaults.All,
+        .. PartsObjectFaults.All,
     ];
 
     /// <summary>No defect: the fault model as it is when nothing is switched on (tests compare it with core).</summary>
@@ -205,7 +206,7 @@ public static class PlantedFaults
     /// <exception cref="ArgumentException">An id is unknown or not one of the model's faults.</exception>
     public static ICellPhysics Combine(params string[] ids)
     {
-        var faults = ids.Select(id => Find(id) is { } f && IndoorFaults.Create(f) is null && PartsIndoorFaults.Create(f) is null && PartsFrameFaults.Create(f) is null && !PortShimFaults.All.Contains(f) && !f.Id.StartsWith("ace-", StringComparison.Ordinal)
+        var faults = ids.Select(id => Find(id) is { } f && IndoorFaults.Create(f) is null && PartsIndoorFaults.Create(f) is null && PartsFrameFaults.Create(f) is null && PartsObjectFaults.Create(f) is null && !PortShimFaults.All.Contains(f) && !f.Id.StartsWith("ace-", StringComparison.Ordinal)
             ? f
             : throw new ArgumentException($"'{id}' is not a fault of the outdoor model", nameof(ids))).ToArray();
         return new FaultyPhysics(faults);
@@ -223,7 +224,7 @@ public static class PlantedFaults
         {
             "ace-same-block-guard" => new ReferenceAdapter(PickPolicy.Retail, new PartsFidelity(SameBlockGuard: true)),
             "ace-every-part-anchors" => new ReferenceAdapter(PickPolicy.Retail, new PartsFidelity(EveryPartAnchors: true)),
-            _ => PortShimFaults.Create(fault) ?? IndoorFaults.Create(fault) ?? PartsIndoorFaults.Create(fault) ?? PartsFrameFaults.Create(fault) ?? new FaultyPhysics(fault),
+            _ => PortShimFaults.Create(fault) ?? IndoorFaults.Create(fault) ?? PartsIndoorFaults.Create(fault) ?? PartsFrameFaults.Create(fault) ?? PartsObjectFaults.Create(fault) ?? new FaultyPhysics(fault),
         };
     }
 }

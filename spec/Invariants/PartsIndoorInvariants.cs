@@ -23,7 +23,7 @@ internal static class PartsIndoorInvariants
     /// <summary>PARTS-INDOOR-SOUNDNESS.</summary>
     public static readonly Invariant<SceneWalk> Soundness = new(
         "PARTS-INDOOR-SOUNDNESS",
-        "In a scene, every loaded env cell the parts list names, other than the anchor's own, is reached by some part's box (within 1 mm, in that cell's frame); every land cell lies in the smallest cell rectangle holding the anchor's column and every part's box (within 1 mm); none appears twice; after static placement from an indoor anchor every loaded cell is the anchor's or one it sees; and an anchor indoor by its low word (a block id too) that names no loaded env cell is listed alone, flagged not loaded, with HitsInteriorCell set when reported.",
+        "In a scene, every loaded env cell the parts list names, other than the anchor's own, is reached by some part's box (within 1 mm, in that cell's frame); every land cell lies in the smallest cell rectangle holding the anchor's column and every part's box — an Always2D part's square ±r around its origin instead (§3.4) — (within 1 mm); none appears twice; after static placement from an indoor anchor every loaded cell is the anchor's or one it sees; and an anchor indoor by its low word (a block id too) that names no loaded env cell is listed alone, flagged not loaded, with HitsInteriorCell set when reported.",
         "facts §1.1, §3.4, §4 steps 3–5, §5.2, §5.3, §5.9",
         Op.None,
         ScenePartsDomain.Instance,
@@ -46,7 +46,7 @@ internal static class PartsIndoorInvariants
         "In a scene, for every loaded land cell the parts list names whose building has a portal into a loaded env cell: when some part's box crosses that door's plane by more than 1 mm on both sides (in the env cell's frame, block offset applied), its centre is within r − 1 mm of the plane and its box overlaps the cell by more than 1 mm, the cell is listed and HitsInteriorCell (when reported) is set — by any part, not only the anchor.",
         "facts §5.3 (parts check_building_transit, retail box-side pairing), §5.8",
         Op.None,
-        ScenePartsDomain.Instance,
+        ScenePartsBuildingDomain.Instance,
         (impl, w) => Judge(impl, w, true, Entered),
         sceneForms: Either);
 
@@ -441,7 +441,8 @@ internal static class PartsIndoorInvariants
         var identity = new Frame(Vector3.Zero, Quaternion.Identity);
         foreach (var p in parts)
         {
-            var box = BoxSide.InFrame(p, p.Cell, identity);
+            // An Always2D part covers the square ±r around its raw origin, not its box (facts §3.4).
+            var box = p.Always2D ? Square(p) : BoxSide.InFrame(p, p.Cell, identity);
             double bx = 192.0 * p.Cell.BlockX, by = 192.0 * p.Cell.BlockY;
             lox = Math.Min(lox, bx + box.Min.X);
             loy = Math.Min(loy, by + box.Min.Y);
@@ -450,6 +451,13 @@ internal static class PartsIndoorInvariants
         }
 
         return new LandRect(lox - Margin, loy - Margin, hix + Margin, hiy + Margin);
+    }
+
+    // An Always2D part's square [x − r, x + r] × [y − r, y + r] in its own block frame (z unused).
+    private static Box Square(Part p)
+    {
+        var o = p.Frame.Origin;
+        return new Box(new Vector3(o.X - p.Radius, o.Y - p.Radius, o.Z), new Vector3(o.X + p.Radius, o.Y + p.Radius, o.Z));
     }
 
     private sealed record Query(int Index, Part[] Parts, FindCellResult Answer, EnvCell? AnchorEnv, bool Filtered, Scene Declared);
