@@ -34,7 +34,7 @@ internal static class ServeCommand
         };
         var noLoad = new Option<bool>("--no-load-scene") { Description = "Do not announce load_scene: every find_cell carries its whole scene (as a server without it)." };
         var noDat = new Option<bool>("--no-dat-records") { Description = "Announce load_scene without dat_records: scenes arrive as the project's JSON, not as retail dat records." };
-        var noWalks = new Option<bool>("--no-walks") { Description = "Do not announce find_cell_walk: walks travel one query per round trip (as a server without it)." };
+        var noWalks = new Option<bool>("--no-walks") { Description = "Do not announce find_cell_walk or find_cell_parts_walk: walks travel one query per round trip (as a server without them)." };
         var noPipeline = new Option<bool>("--no-pipeline") { Description = "Do not announce pipeline: the tool waits for each answer before the next request (as a server without it)." };
         var announceRetail = new Option<bool>("--announce-retail")
         {

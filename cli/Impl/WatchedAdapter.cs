@@ -152,6 +152,12 @@ internal sealed class WatchedAdapter : ICellPhysics, IDisposable
         Call(loadCells ? Op.FindCellPartsTransition : Op.FindCellPartsScene, () => inner.FindCellParts(scene, parts, loadCells));
 
     /// <inheritdoc/>
+    public IReadOnlyList<FindCellResult> FindCellPartsWalk(Scene scene, IReadOnlyList<IReadOnlyList<Part>> queries, bool loadCells) =>
+        inner.Indoor.AceKeepsStaleCells
+            ? Call("find_cell_parts_walk", () => inner.FindCellPartsWalk(scene, queries, loadCells)) // its array lives for the walk (facts §7 #6): asked whole
+            : [.. queries.Select(q => FindCellParts(scene, q, loadCells))]; // query by query, each watched with its own timeout
+
+    /// <inheritdoc/>
     public IReadOnlyList<FindCellResult> FindCellWalk(WalkRequest walk) =>
         inner.Indoor.AceKeepsStaleCells
             ? Call("find_cell_walk", () => inner.FindCellWalk(walk)) // its array lives for the walk (facts §7 #6): asked whole

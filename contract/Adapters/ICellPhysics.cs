@@ -128,6 +128,29 @@ public interface ICellPhysics
         throw new NotSupportedException(loadCells ? "find_cell_parts_transition" : "find_cell_parts_scene");
 
     /// <summary>
+    /// <c>find_cell_parts_walk</c>: one walk's parts queries of one kind, in order, one answer each. The default asks each
+    /// query through <see cref="FindCellParts"/>, so an implementation that does not override it answers exactly as when
+    /// asked query by query; one declaring ace-keeps-stale-cells overrides it, since its array lives for the walk (facts
+    /// §4 step 1, §7 #6: ACE does not clear the cells, so each answer keeps the previous answer's), and an adapter across
+    /// a process boundary overrides it to answer the walk in one round trip.
+    /// </summary>
+    /// <param name="scene">The scene.</param>
+    /// <param name="queries">The walk's parts queries, in order (each anchored by its first part).</param>
+    /// <param name="loadCells">True for the transition kind, false for static placement.</param>
+    /// <returns>One answer per query.</returns>
+    IReadOnlyList<FindCellResult> FindCellPartsWalk(Scene scene, IReadOnlyList<IReadOnlyList<Part>> queries, bool loadCells)
+    {
+        ArgumentNullException.ThrowIfNull(queries);
+        var answers = new FindCellResult[queries.Count];
+        for (int i = 0; i < answers.Length; i++)
+        {
+            answers[i] = FindCellParts(scene, queries[i], loadCells);
+        }
+
+        return answers;
+    }
+
+    /// <summary>
     /// <c>outside_cells</c> with the position's own point (block frame), which retail uses only when
     /// <paramref name="spheres"/> is empty (facts §3.3 step 3). The default ignores the point: override it.
     /// </summary>

@@ -95,6 +95,10 @@ public sealed class OpsOffered(ICellPhysics inner, Op mask) : ICellPhysics, ITra
     public FindCellResult FindCellParts(Scene scene, IReadOnlyList<Part> parts, bool loadCells) =>
         Need(loadCells ? Op.FindCellPartsTransition : Op.FindCellPartsScene).FindCellParts(scene, parts, loadCells);
 
+    /// <inheritdoc/>
+    public IReadOnlyList<FindCellResult> FindCellPartsWalk(Scene scene, IReadOnlyList<IReadOnlyList<Part>> queries, bool loadCells) =>
+        Need(loadCells ? Op.FindCellPartsTransition : Op.FindCellPartsScene).FindCellPartsWalk(scene, queries, loadCells);
+
     private ICellPhysics Need(Op op) =>
         (Ops & op) != 0 ? inner : throw new NotSupportedException($"{inner.Name} is offered without {OpNames.Names(op)[0]}");
 }

@@ -145,7 +145,8 @@ public sealed class ReferenceAdapter(PickPolicy pick = PickPolicy.Retail, PartsF
     }
 
     /// <inheritdoc/>
-    /// <remarks>Core's <see cref="ScenePartsQuery"/> in this adapter's indoor, parts and volume modes; a fresh array per query.</remarks>
+    /// <remarks>Core's <see cref="ScenePartsQuery"/> in this adapter's indoor, parts and volume modes; a fresh array per query,
+    /// stale cells declared or not (their array lives for one walk: <see cref="FindCellPartsWalk"/>).</remarks>
     public FindCellResult FindCellParts(Scene scene, IReadOnlyList<Part> parts, bool loadCells)
     {
         ArgumentNullException.ThrowIfNull(scene);
@@ -154,6 +155,43 @@ public sealed class ReferenceAdapter(PickPolicy pick = PickPolicy.Retail, PartsF
         array.Reset();
         bool hits = ScenePartsQuery.FindCellList(array, SceneBuild.Build(scene, Volumes), [.. parts], loadCells, Indoor with { AceKeepsStaleCells = false }, partsFidelity);
         return new FindCellResult(array.ToIdArray(), CellId.None) { HitsInteriorCell = hits, Loaded = LoadedFlags(array) };
+    }
+
+    /// <summary>
+    /// Answers one walk's parts queries of one kind. Under ace-keeps-stale-cells they share one array that is never
+    /// cleared (facts §4 step 1, §7 #6: ACE's find_bbox_cell_list resets only the AddedOutside latch, §3.5, and keeps the
+    /// cells), so each answer holds the previous answer's cells unless the closure or the filter removes them; the array
+    /// lives for this one call, one walk of one kind, and starts empty. Otherwise each query is a fresh one, as
+    /// <see cref="FindCellParts"/> asks it.
+    /// </summary>
+    /// <param name="scene">The scene.</param>
+    /// <param name="queries">The walk's parts queries, in order.</param>
+    /// <param name="loadCells">True for the transition kind.</param>
+    /// <returns>One answer per query.</returns>
+    public IReadOnlyList<FindCellResult> FindCellPartsWalk(Scene scene, IReadOnlyList<IReadOnlyList<Part>> queries, bool loadCells)
+    {
+        ArgumentNullException.ThrowIfNull(scene);
+        ArgumentNullException.ThrowIfNull(queries);
+        var answers = new FindCellResult[queries.Count];
+        if (!Indoor.AceKeepsStaleCells)
+        {
+            for (int i = 0; i < answers.Length; i++)
+            {
+                answers[i] = FindCellParts(scene, queries[i], loadCells);
+            }
+
+            return answers;
+        }
+
+        var array = new CellArray();
+        var built = SceneBuild.Build(scene, Volumes);
+        for (int i = 0; i < answers.Length; i++)
+        {
+            bool hits = ScenePartsQuery.FindCellList(array, built, [.. queries[i]], loadCells, Indoor, partsFidelity);
+            answers[i] = new FindCellResult(array.ToIdArray(), CellId.None) { HitsInteriorCell = hits, Loaded = LoadedFlags(array) };
+        }
+
+        return answers;
     }
 
     /// <inheritdoc/>

@@ -9,7 +9,7 @@ namespace AcPhys.Props.Indoor;
 /// <summary>The planted faults of the parts variant indoors (issues 41, 53; PartsObjectFaults for Always2D and held parts): each caught on the pr profile by every invariant it names, and the fault model with no defect answers as core.</summary>
 public sealed class PartsFaultsAreCaught(ITestOutputHelper output)
 {
-    public static TheoryData<string> FaultIds => new(PartsIndoorFaults.All.Concat(PartsFrameFaults.All).Concat(PartsShapeFaults.All).Concat(PartsObjectFaults.All).Select(f => f.Id));
+    public static TheoryData<string> FaultIds => new(PartsIndoorFaults.All.Concat(PartsFrameFaults.All).Concat(PartsShapeFaults.All).Concat(PartsObjectFaults.All).Concat(PartsStaleFaults.All).Select(f => f.Id));
 
     [Theory(DisplayName = "Parts-indoor planted fault is caught in process by every invariant it names, independent ones included where retail is exact")]
     [MemberData(nameof(FaultIds))]

@@ -38,4 +38,7 @@ internal sealed class RewrittenAnswers(ICellPhysics inner, Func<FindCellResult, 
         rewrite(Inner.FindCellParts(scene, parts, loadCells));
 
     public IReadOnlyList<FindCellResult> FindCellWalk(WalkRequest walk) => [.. Inner.FindCellWalk(walk).Select(rewrite)];
+
+    public IReadOnlyList<FindCellResult> FindCellPartsWalk(Scene scene, IReadOnlyList<IReadOnlyList<Part>> queries, bool loadCells) =>
+        [.. Inner.FindCellPartsWalk(scene, queries, loadCells).Select(rewrite)];
 }

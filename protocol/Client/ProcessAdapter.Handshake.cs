@@ -83,6 +83,12 @@ public sealed partial class ProcessAdapter
                     throw new AdapterFailureException($"'{commandLine}' declares ace-keeps-stale-cells but is asked query by query ({(frame == WorldFrame.Name ? "world frame" : "no find_cell_walk")}): the stale array lives for one walk, so a port declaring it must announce find_cell_walk in the block frame (docs/conformance.md, \"Declared modes\")");
                 }
 
+                if (indoor.AceKeepsStaleCells && (ops & (Op.FindCellPartsScene | Op.FindCellPartsTransition)) != 0 && ((capabilities & Capability.FindCellPartsWalk) == 0 || frame == WorldFrame.Name))
+                {
+                    // The parts list's stale array lives for one walk as the sphere list's does (facts §7 #6).
+                    throw new AdapterFailureException($"'{commandLine}' declares ace-keeps-stale-cells but would be asked its parts queries one by one ({(frame == WorldFrame.Name ? "world frame" : "no find_cell_parts_walk")}): the stale array lives for one walk, so a port declaring it that offers find_cell_parts_scene or find_cell_parts_transition must announce find_cell_parts_walk in the block frame (docs/conformance.md, \"Declared modes\")");
+                }
+
                 return new ProcessAdapter(child, options.Timeout, name, ops, capabilities, pick, unknown) { Indoor = indoor, Outdoor = outdoor, InWorldFrame = frame == WorldFrame.Name };
             }
             catch (WireException e)

@@ -240,6 +240,51 @@ public sealed partial class ProcessAdapter : ICellPhysics, ITransport, IDisposab
             r => Project(row.Ask(r, query), true));
     }
 
+    /// <summary>
+    /// <c>find_cell_parts_walk</c>: one walk's parts queries of one kind in one round trip when the implementation announced
+    /// it (docs/protocol.md, "Whole parts walks"); otherwise, or for more than <see cref="WalkWire.MaxSteps"/> queries or
+    /// in the world frame, query by query through <see cref="FindCellParts"/>.
+    /// </summary>
+    /// <param name="scene">The scene.</param>
+    /// <param name="queries">The parts queries, in order.</param>
+    /// <param name="loadCells">True for the transition kind.</param>
+    /// <returns>One answer per query.</returns>
+    /// <exception cref="UnposableQueryException">A part protocol v1 cannot carry (as <see cref="OutsideCellsParts"/>).</exception>
+    public IReadOnlyList<FindCellResult> FindCellPartsWalk(Scene scene, IReadOnlyList<IReadOnlyList<Part>> queries, bool loadCells)
+    {
+        ArgumentNullException.ThrowIfNull(scene);
+        ArgumentNullException.ThrowIfNull(queries);
+        if ((Capabilities & Capability.FindCellPartsWalk) == 0 || queries.Count > WalkWire.MaxSteps || InWorldFrame)
+        {
+            return [.. queries.Select(q => FindCellParts(scene, q, loadCells))];
+        }
+
+        foreach (var parts in queries)
+        {
+            for (int i = 0; i < parts.Count; i++)
+            {
+                if (PartBounds.Problem(parts[i], parts[0]) is var (field, problem))
+                {
+                    throw new UnposableQueryException($"parts[{i}].{field}: {problem}: protocol v1 cannot carry this query (docs/protocol.md); case not judged");
+                }
+            }
+        }
+
+        var row = loadCells ? MessageTable.FindCellPartsTransition : MessageTable.FindCellPartsScene;
+        var shape = Answers.Walk(queries.Count);
+        return Call(
+            row.Op,
+            "find_cell_parts_walk",
+            shape,
+            w =>
+            {
+                SceneField(w, scene);
+                PartsWalkWire.WriteFields(w, queries, loadCells);
+            },
+            a => LearnAll(shape.Read(a), true),
+            r => ProjectAll(r.FindCellPartsWalk(scene, queries, loadCells), true));
+    }
+
     /// <inheritdoc/>
     public void Dispose()
     {

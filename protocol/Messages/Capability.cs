@@ -29,8 +29,15 @@ public enum Capability
     /// </summary>
     Pipeline = 1 << 3,
 
+    /// <summary>
+    /// <c>find_cell_parts_walk</c>: one walk's parts queries of one kind in one request, answered with every query's answer
+    /// (docs/protocol.md, "Whole parts walks"); a port declaring ace-keeps-stale-cells that offers a parts kind must
+    /// announce it, since its array lives for the walk (facts §7 #6). The parts invariants still need the parts op.
+    /// </summary>
+    FindCellPartsWalk = 1 << 4,
+
     /// <summary>Every capability protocol v1 knows.</summary>
-    All = LoadScene | DatRecords | FindCellWalk | Pipeline,
+    All = LoadScene | DatRecords | FindCellWalk | Pipeline | FindCellPartsWalk,
 }
 
 /// <summary>Wire names of <see cref="Capability"/> values, announced after the operations in <c>hello</c>'s <c>ops</c>.</summary>
@@ -42,6 +49,7 @@ public static class CapabilityNames
         (Capability.DatRecords, "dat_records"),
         (Capability.FindCellWalk, "find_cell_walk"),
         (Capability.Pipeline, "pipeline"),
+        (Capability.FindCellPartsWalk, "find_cell_parts_walk"),
     ];
 
     /// <summary>Returns the wire names of every flag set in <paramref name="capabilities"/>.</summary>

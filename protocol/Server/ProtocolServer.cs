@@ -35,7 +35,7 @@ public sealed class ProtocolServer(ICellPhysics impl)
     /// <summary>Gets or initializes a value indicating whether the server announces <c>dat_records</c> with <c>load_scene</c> (true by default: scenes then arrive as dat records).</summary>
     public bool DatRecords { get; init; } = true;
 
-    /// <summary>Gets or initializes a value indicating whether the server announces <c>find_cell_walk</c> (true by default; false serves as an older server would: walks come query by query).</summary>
+    /// <summary>Gets or initializes a value indicating whether the server announces <c>find_cell_walk</c> and <c>find_cell_parts_walk</c> (true by default; false serves as an older server would: walks come query by query).</summary>
     public bool Walks { get; init; } = true;
 
     /// <summary>Gets or initializes a value indicating whether the server declares <c>"frame": "world"</c> and converts each request's world coordinates back to block frames, as a world-frame port's shim would (<see cref="WorldFrame"/>).</summary>
@@ -167,6 +167,10 @@ public sealed class ProtocolServer(ICellPhysics impl)
                     : WireProfile.Time("child: find_cell_walk", () => FindCellWalk(request));
             case "find_cell" or "find_cell_scene": // find_cell_scene is announced, never sent: a scene travels in find_cell (docs/protocol.md, "Scenes")
                 return FindCell(request);
+            case "find_cell_parts_walk":
+                return InWorldFrame
+                    ? Error("find_cell_parts_walk is not offered in the world frame (parts queries are asked one by one)")
+                    : WireProfile.Time("child: find_cell_parts_walk", () => FindCellPartsWalk(request));
             case "find_cell_parts_scene":
                 return FindCellParts(request, MessageTable.FindCellPartsScene);
             case "find_cell_parts_transition":
@@ -240,6 +244,32 @@ public sealed class ProtocolServer(ICellPhysics impl)
         }
 
         return row.Answer.Line(row.Ask(impl, row.ReadRequest(request) with { Scene = scene }));
+    }
+
+    // find_cell_parts_walk: one walk's parts queries of one kind, answered by the implementation's walk (its array, under
+    // ace-keeps-stale-cells, lives for the walk: facts §7 #6), one answer per query.
+    private string FindCellPartsWalk(JsonElement request)
+    {
+        var queries = PartsWalkWire.ReadFields(request, out bool loadCells);
+        var row = loadCells ? MessageTable.FindCellPartsTransition : MessageTable.FindCellPartsScene;
+        if ((impl.Ops & row.Op) == 0)
+        {
+            return Error($"find_cell_parts_walk{(loadCells ? " (load_cells)" : string.Empty)} needs {row.Name}, which {impl.Name} does not offer");
+        }
+
+        var sceneField = request.TryGetProperty("scene_id", out _) ? default : Wire.Field(request, "scene");
+        if (sceneField.ValueKind == JsonValueKind.Null)
+        {
+            return Error("find_cell_parts_walk needs a scene (\"scene_id\" or \"scene\"): the parts variant indoors has no open-land form");
+        }
+
+        if (ScenePartsOf(request, out var scene) is string refused)
+        {
+            return refused;
+        }
+
+        var answers = impl.FindCellPartsWalk(scene!, queries, loadCells);
+        return Answers.Walk(answers.Count).Line(answers);
     }
 
     // The scene of a parts request: loaded by id, or inline (read whatever scene queries the implementation offers).
@@ -398,6 +428,7 @@ public sealed class ProtocolServer(ICellPhysics impl)
             var ops = impl.Ops;
             var capabilities = Pipeline ? Capability.Pipeline : Capability.None; // answers depend on the request alone; scene ids may be the client's
             capabilities |= Walks && !InWorldFrame && (ops & (Op.FindCell | SceneQueryKinds.Either)) != 0 ? Capability.FindCellWalk : Capability.None; // threaded here (WalkThread)
+            capabilities |= Walks && !InWorldFrame && (ops & (Op.FindCellPartsScene | Op.FindCellPartsTransition)) != 0 ? Capability.FindCellPartsWalk : Capability.None;
             if (LoadScenes && SceneQueryKinds.OffersScenes(ops))
             {
                 capabilities |= Capability.LoadScene; // the server holds the scenes; the implementation behind it needs nothing for it

@@ -74,4 +74,7 @@ internal abstract class ForwardingPhysics(ICellPhysics inner) : ICellPhysics
 
     /// <inheritdoc/>
     public virtual FindCellResult FindCellParts(Scene scene, IReadOnlyList<Part> parts, bool loadCells) => Inner.FindCellParts(scene, parts, loadCells);
+
+    /// <inheritdoc/>
+    public virtual IReadOnlyList<FindCellResult> FindCellPartsWalk(Scene scene, IReadOnlyList<IReadOnlyList<Part>> queries, bool loadCells) => Inner.FindCellPartsWalk(scene, queries, loadCells);
 }

@@ -18,6 +18,11 @@ internal sealed class PartsFaultyPhysics(PlantedFault? fault) : ForwardingPhysic
     /// <inheritdoc/>
     public override IReadOnlyList<FindCellResult> FindCellWalk(WalkRequest walk) => WalkThread.AskEach(this, walk);
 
+    // A parts walk too goes query by query through this model (ICellPhysics.FindCellPartsWalk's default).
+    /// <inheritdoc/>
+    public override IReadOnlyList<FindCellResult> FindCellPartsWalk(Scene scene, IReadOnlyList<IReadOnlyList<Part>> queries, bool loadCells) =>
+        [.. queries.Select(q => FindCellParts(scene, q, loadCells))];
+
     /// <inheritdoc/>
     public override FindCellResult FindCellParts(Scene scene, IReadOnlyList<Part> parts, bool loadCells)
     {

@@ -13,4 +13,8 @@ internal sealed class PartsMisreadPhysics(PlantedFault fault) : ForwardingPhysic
     /// <inheritdoc/>
     public override FindCellResult FindCellParts(Scene scene, IReadOnlyList<Part> parts, bool loadCells) =>
         Inner.FindCellParts(scene, PartsMisread.Read(parts, fault), loadCells);
+
+    /// <inheritdoc/>
+    public override IReadOnlyList<FindCellResult> FindCellPartsWalk(Scene scene, IReadOnlyList<IReadOnlyList<Part>> queries, bool loadCells) =>
+        Inner.FindCellPartsWalk(scene, [.. queries.Select(q => (IReadOnlyList<Part>)PartsMisread.Read(q, fault))], loadCells);
 }

@@ -180,7 +180,7 @@ public static class PlantedFaults
         TruncFloor, NanAsZero, MapEdge2040, SignExtendBlockY, DropBlockLength, NoEpsSnap, InboundXOnly,
         Clamp106, InCellNeighbours, ElseDiagonal, SphereGuardInverted, SphereLeak, NoReset, NoHysteresis, StickyPick, AceSameBlockGuard, AceEveryPartAnchors,
         NoSphereNoCell, NoSphereOriginIgnored, EnvPositionContains, BlockIdZeroOk, TouchInclusive, FirstHitOutdoorPick, CheckedCast,
-        .. IndoorFaults.All, .. PartsIndoorFaults.All, .. PartsFrameFaults.All, .. PartsShapeFaults.All,
+        .. IndoorFaults.All, .. PartsIndoorFaults.All, .. PartsFrameFaults.All, .. PartsShapeFaults.All, .. PartsStaleFaults.All,
         .. PortShimFaults.All,
         .. PartsObjectFaults.All,
     ];
@@ -206,7 +206,7 @@ public static class PlantedFaults
     /// <exception cref="ArgumentException">An id is unknown or not one of the model's faults.</exception>
     public static ICellPhysics Combine(params string[] ids)
     {
-        var faults = ids.Select(id => Find(id) is { } f && IndoorFaults.Create(f) is null && PartsIndoorFaults.Create(f) is null && PartsFrameFaults.Create(f) is null && PartsObjectFaults.Create(f) is null && !PortShimFaults.All.Contains(f) && !f.Id.StartsWith("ace-", StringComparison.Ordinal)
+        var faults = ids.Select(id => Find(id) is { } f && IndoorFaults.Create(f) is null && PartsIndoorFaults.Create(f) is null && PartsFrameFaults.Create(f) is null && PartsObjectFaults.Create(f) is null && PartsStaleFaults.Create(f) is null && !PortShimFaults.All.Contains(f) && !f.Id.StartsWith("ace-", StringComparison.Ordinal)
             ? f
             : throw new ArgumentException($"'{id}' is not a fault of the outdoor model", nameof(ids))).ToArray();
         return new FaultyPhysics(faults);
@@ -224,7 +224,7 @@ public static class PlantedFaults
         {
             "ace-same-block-guard" => new ReferenceAdapter(PickPolicy.Retail, new PartsFidelity(SameBlockGuard: true)),
             "ace-every-part-anchors" => new ReferenceAdapter(PickPolicy.Retail, new PartsFidelity(EveryPartAnchors: true)),
-            _ => PortShimFaults.Create(fault) ?? IndoorFaults.Create(fault) ?? PartsIndoorFaults.Create(fault) ?? PartsFrameFaults.Create(fault) ?? PartsObjectFaults.Create(fault) ?? new FaultyPhysics(fault),
+            _ => PortShimFaults.Create(fault) ?? IndoorFaults.Create(fault) ?? PartsIndoorFaults.Create(fault) ?? PartsFrameFaults.Create(fault) ?? PartsObjectFaults.Create(fault) ?? PartsStaleFaults.Create(fault) ?? new FaultyPhysics(fault),
         };
     }
 }

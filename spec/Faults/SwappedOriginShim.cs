@@ -44,6 +44,10 @@ internal sealed class SwappedOriginShim(ICellPhysics inner) : ForwardingPhysics(
     public override FindCellResult FindCellParts(Scene scene, IReadOnlyList<Part> parts, bool loadCells) => Inner.FindCellParts(scene, Shifted(parts), loadCells);
 
     /// <inheritdoc/>
+    public override IReadOnlyList<FindCellResult> FindCellPartsWalk(Scene scene, IReadOnlyList<IReadOnlyList<Part>> queries, bool loadCells) =>
+        Inner.FindCellPartsWalk(scene, [.. queries.Select(q => (IReadOnlyList<Part>)Shifted(q))], loadCells);
+
+    /// <inheritdoc/>
     public override FindCellResult FindCell(Scene? scene, CellId cell, IReadOnlyList<Sphere> spheres, CellId current) => Inner.FindCell(scene, cell, Shifted(cell, spheres), current);
 
     /// <inheritdoc/>

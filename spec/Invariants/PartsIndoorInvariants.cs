@@ -23,8 +23,8 @@ internal static class PartsIndoorInvariants
     /// <summary>PARTS-INDOOR-SOUNDNESS.</summary>
     public static readonly Invariant<SceneWalk> Soundness = new(
         "PARTS-INDOOR-SOUNDNESS",
-        "In a scene, every loaded env cell the parts list names, other than the anchor's own, is reached by some part's box (within 1 mm, in that cell's frame); every land cell lies in the smallest cell rectangle holding the anchor's column and every part's box — an Always2D part's square ±r around its origin instead (§3.4) — (within 1 mm); none appears twice; after static placement from an indoor anchor every loaded cell is the anchor's or one it sees; and an anchor indoor by its low word (a block id too) that names no loaded env cell is listed alone, flagged not loaded, with HitsInteriorCell set when reported.",
-        "facts §1.1, §3.4, §4 steps 3–5, §5.2, §5.3, §5.9",
+        "In a scene, every loaded env cell the parts list names, other than the anchor's own, is reached by some part's box (within 1 mm, in that cell's frame); every land cell lies in the smallest cell rectangle holding the anchor's column and every part's box — an Always2D part's square ±r around its origin instead (§3.4) — (within 1 mm); every env id naming no loaded cell is the anchor or a load hint (the target of a portal of a cell the closure walked, under ACE's key when declared); none appears twice; after static placement from an indoor anchor every loaded cell is the anchor's or one it sees; and an anchor indoor by its low word (a block id too) that names no loaded env cell is listed alone, flagged not loaded, with HitsInteriorCell set when reported. Under a declared ace-keeps-stale-cells the cells of the walk's previous parts answer of the same kind are excused, and nothing else.",
+        "facts §1.1, §3.4, §4 steps 1, 3–5, §5.2, §5.3, §5.9, §7 #6",
         Op.None,
         ScenePartsDomain.Instance,
         (impl, w) => Judge(impl, w, false, Sound),
@@ -70,11 +70,10 @@ internal static class PartsIndoorInvariants
         var built = SceneBuild.Build(w.Scene);
         bool loadCells = ScenePartsQueries.Kind(impl.Ops, preferTransition);
         bool applied = false;
-        foreach (var (index, parts) in ScenePartsQueries.Of(w))
+        foreach (var (index, parts, answer, stale) in PartsSession.Ask(impl, w, loadCells))
         {
-            var answer = impl.FindCellParts(w.Scene, parts, loadCells);
             var anchor = parts[0].Cell;
-            var q = new Query(index, parts, answer, anchor.IsIndoorByLowWord ? built.GetEnvCell(anchor) : null, anchor.IsIndoorByLowWord && !(loadCells && !impl.Indoor.AceTransitionFilters), w.Scene);
+            var q = new Query(index, parts, answer, anchor.IsIndoorByLowWord ? built.GetEnvCell(anchor) : null, anchor.IsIndoorByLowWord && !(loadCells && !impl.Indoor.AceTransitionFilters), stale, w.Scene);
             if (check(impl, built, q, ref applied) is string why)
             {
                 return Outcome.ViolatedAt(index, $"step {index} ({(loadCells ? "find_cell_parts_transition" : "find_cell_parts_scene")}, {parts.Length} part{(parts.Length == 1 ? string.Empty : "s")}, anchor {anchor}): {why}");
@@ -93,7 +92,7 @@ internal static class PartsIndoorInvariants
         }
 
         var anchor = q.Parts[0];
-        if (MissingAnchor(impl, scene, q) is string missing)
+        if (MissingAnchor(scene, q) is string missing)
         {
             applied = true;
             return missing;
@@ -104,13 +103,13 @@ internal static class PartsIndoorInvariants
         {
             var id = cells[k];
             applied = true;
-            if (AceBlindHint(impl, scene, q, k))
+            if (AceBlindHint(impl, scene, q, k) || (q.Stale?.Contains(id) ?? false))
             {
                 continue;
             }
 
             var env = id.IsEnv ? scene.GetEnvCell(id) : null;
-            if (env is null && id.IsIndoorByLowWord && id != anchor.Cell && !impl.Indoor.AceKeepsStaleCells && !LoadHint(impl, scene, q, id))
+            if (env is null && id.IsIndoorByLowWord && id != anchor.Cell && !LoadHint(impl, scene, q, id))
             {
                 return $"{id} names no loaded env cell, and is neither the anchor nor a load hint (a portal target of a cell the closure walked: facts §4 step 3, §5.1)";
             }
@@ -252,13 +251,16 @@ internal static class PartsIndoorInvariants
             }
 
             string kind = loadCells ? "find_cell_parts_transition" : "find_cell_parts_scene";
-            foreach (var (index, parts) in queries)
+            // The reference's walk in the same mode (stale cells: one array per walk and kind), on the scene the implementation was sent.
+            var walk = impl.Indoor.AceKeepsStaleCells ? reference.FindCellPartsWalk(scene, [.. queries.Select(q => (IReadOnlyList<Part>)q.Parts)], loadCells) : null;
+            int at = 0;
+            foreach (var (index, parts, got, _) in PartsSession.Ask(impl, w, loadCells))
             {
                 applied = true;
-                var expected = reference.FindCellParts(scene, parts, loadCells);
-                var got = impl.FindCellParts(w.Scene, parts, loadCells);
+                int i = at++;
+                var expected = walk is null ? reference.FindCellParts(scene, parts, loadCells) : walk[i];
                 // A difference a tie probe's answer explains is the arithmetic's, not the port's (docs/conformance.md, "Scenes").
-                if (Difference(got, expected) is string why && PartsProbes.Of(parts).All(p => Difference(got, reference.FindCellParts(scene, p, loadCells)) is not null))
+                if (Difference(got, expected) is string why && PartsProbes.Of(parts).All(p => Difference(got, Probe(reference, scene, queries, i, p, loadCells, walk is not null)) is not null))
                 {
                     return Outcome.ViolatedAt(index, $"step {index} ({kind}): {why}");
                 }
@@ -272,6 +274,12 @@ internal static class PartsIndoorInvariants
 
         return applied ? Outcome.Holds : Outcome.Vacuous;
     }
+
+    // The reference's answer to query i with its parts moved to a probe: under stale cells the walk's earlier queries are
+    // asked first in the same walk (only when the answers differ, so a conforming walk pays nothing).
+    private static FindCellResult Probe(ICellPhysics reference, Scene scene, IReadOnlyList<(int Index, Part[] Parts)> queries, int i, Part[] probe, bool loadCells, bool stale) =>
+        !stale ? reference.FindCellParts(scene, probe, loadCells)
+            : reference.FindCellPartsWalk(scene, [.. queries.Take(i).Select(q => (IReadOnlyList<Part>)q.Parts), probe], loadCells)[i];
 
     // The cells in order, the load-hint flags and HitsInteriorCell when reported, against the reference's.
     private static string? Difference(FindCellResult got, FindCellResult expected)
@@ -291,22 +299,26 @@ internal static class PartsIndoorInvariants
 
     // An anchor indoor by its low word (an env id, or a block id 0xFFFF: facts §1.1) that names no loaded env cell is
     // added with its load flag false and sets HitsInteriorCell (§4 step 3); no closure runs from it (step 4) and the
-    // filter keeps it (step 5: its own id), so the list is the anchor alone. ACE's stale cells keep earlier entries.
-    private static string? MissingAnchor(ICellPhysics impl, CellScene scene, Query q)
+    // filter keeps it (step 5: its own id), so the list is the anchor alone. Under a declared ace-keeps-stale-cells the
+    // previous answer's cells stay too (§7 #6: no closure, no filter runs to remove them), and nothing else.
+    private static string? MissingAnchor(CellScene scene, Query q)
     {
         var anchor = q.Parts[0].Cell;
-        if (!anchor.IsIndoorByLowWord || scene.GetEnvCell(anchor) is not null || impl.Indoor.AceKeepsStaleCells)
+        if (!anchor.IsIndoorByLowWord || scene.GetEnvCell(anchor) is not null)
         {
             return null;
         }
 
         var cells = q.Answer.Cells;
-        if (cells.Count != 1 || cells[0] != anchor)
+        int at = q.Stale is null ? (cells.Count == 1 ? 0 : -1) : Enumerable.Range(0, cells.Count).FirstOrDefault(i => cells[i] == anchor, -1);
+        if (at < 0 || cells[at] != anchor || (q.Stale is { } stale && cells.Any(c => c != anchor && !stale.Contains(c))))
         {
-            return $"the anchor {anchor} names no loaded env cell, so the list is the anchor alone (facts §4 steps 3–4), but it is [{string.Join(", ", cells)}]";
+            return q.Stale is null
+                ? $"the anchor {anchor} names no loaded env cell, so the list is the anchor alone (facts §4 steps 3–4), but it is [{string.Join(", ", cells)}]"
+                : $"the anchor {anchor} names no loaded env cell, so the list is the anchor and the previous answer's stale cells (facts §4 steps 3–4, §7 #6), but it is [{string.Join(", ", cells)}]";
         }
 
-        if (q.Answer.Loaded is { } loaded && loaded.Count > 0 && loaded[0])
+        if (q.Answer.Loaded is { } loaded && loaded.Count > at && loaded[at])
         {
             return $"the anchor {anchor} names no loaded env cell, but its load flag is true";
         }
@@ -460,7 +472,7 @@ internal static class PartsIndoorInvariants
         return new Box(new Vector3(o.X - p.Radius, o.Y - p.Radius, o.Z), new Vector3(o.X + p.Radius, o.Y + p.Radius, o.Z));
     }
 
-    private sealed record Query(int Index, Part[] Parts, FindCellResult Answer, EnvCell? AnchorEnv, bool Filtered, Scene Declared);
+    private sealed record Query(int Index, Part[] Parts, FindCellResult Answer, EnvCell? AnchorEnv, bool Filtered, IReadOnlySet<CellId>? Stale, Scene Declared);
 
     private readonly record struct LandRect(double LoX, double LoY, double HiX, double HiY)
     {
