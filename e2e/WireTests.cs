@@ -59,7 +59,7 @@ public sealed class WireTests
         Assert.StartsWith("{\"error\":\"unknown op", server.Answer("{\"op\":\"teleport\"}"), StringComparison.Ordinal);
         Assert.StartsWith("{\"error\":\"malformed request: not JSON", server.Answer("hello"), StringComparison.Ordinal);
         using var hello = JsonDocument.Parse(server.Answer("{\"op\":\"hello\",\"protocol\":1}"));
-        Assert.Equal(17, hello.RootElement.GetProperty("ops").GetArrayLength()); // protocol v1 with find_cell_scene, find_cell_transition, find_cell_parts_scene, find_cell_parts_transition, load_scene, dat_records, find_cell_walk and pipeline
+        Assert.Equal(18, hello.RootElement.GetProperty("ops").GetArrayLength()); // protocol v1 with find_cell_scene, find_cell_transition, find_cell_parts_scene, find_cell_parts_transition, load_scene, dat_records, find_cell_walk, find_cell_parts_walk and pipeline
         Assert.StartsWith("{\"error\":\"protocol 2 not supported", server.Answer("{\"op\":\"hello\",\"protocol\":2}"), StringComparison.Ordinal);
     }
 
