@@ -12,9 +12,6 @@ namespace AcPhys.Spec.Cases;
 /// </summary>
 internal static class PartCells
 {
-    /// <summary>The first env cell id a block holds (a scene's cells count up from it).</summary>
-    private const ushort FirstEnv = 0x0100;
-
     /// <summary>Returns whether part <paramref name="k"/> at a step is held in a portal neighbour of its cell: 1 in 4 non-anchor parts.</summary>
     /// <param name="step">The step index.</param>
     /// <param name="k">The part's index (the anchor, 0, never).</param>
@@ -90,13 +87,13 @@ internal static class PartCells
     // An env cell of the scene in another block than the anchor's, else the first env cell of the block east (west at the map's edge).
     private static CellId OtherBlockCell(Scene scene, CellId anchor, int step)
     {
-        var others = scene.Cells.Select(c => c.Id).Where(id => id.IsEnv && (id.Value & LandDefs.BlockMask) != (anchor.Value & LandDefs.BlockMask)).ToArray();
+        var others = scene.Cells.Select(c => c.Id).Where(id => id.IsEnv && id.Landblock != anchor.Landblock).ToArray();
         if (others.Length > 0)
         {
             return others[(step / 4) % others.Length];
         }
 
         int bx = anchor.BlockX < 0xFE ? anchor.BlockX + 1 : anchor.BlockX - 1;
-        return new CellId(((uint)bx << 24) | ((uint)anchor.BlockY << 16) | FirstEnv);
+        return new CellId((byte)bx, anchor.BlockY, LandDefs.FirstEnvCellId);
     }
 }

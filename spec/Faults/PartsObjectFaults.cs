@@ -49,7 +49,7 @@ internal static class PartsObjectFaults
     {
         var anchor = parts[0].Cell;
         bool indoor = anchor.IsIndoorByLowWord;
-        bool otherBlock = (p.Cell.Value & LandDefs.BlockMask) != (anchor.Value & LandDefs.BlockMask);
+        bool otherBlock = p.Cell.Landblock != anchor.Landblock;
         return fault == Always2DIgnoredIndoors && indoor ? p with { Always2D = false }
             : fault == OwnCellFrame && indoor ? p with { Cell = anchor }
             : fault == EnvBlockOffsetDropped && p.Cell.IsEnv && otherBlock ? p with { Cell = anchor.WithLow(p.Cell.Low) }
